@@ -1,0 +1,1042 @@
+/* cylinder_isect.h - v1.0.0 - ray/cylinder intersection in float and double, C99, one header.
+
+   Ray against a finite cylinder given by center c, axis a, radius r and height h: the open
+   tube by default, the capped solid and the infinite tube as options; nearest hit, both
+   crossings, or a shadow-ray test. No allocation, no global state, no I/O; nothing to link but
+   sqrt and fma (both overridable). Every hit carries a rigorous bound on its t.
+
+   QUICK START
+   ===========
+       #include "cylinder_isect.h"
+
+       cylf_ray ray = {{0, -5, 0}, {0, 1, 0}, 0.0f, INFINITY};        // o, d, tmin, tmax
+       cylf_cylinder cyl = {{0, 0, 0}, {0, 0, 1}, 1.0f, 2.0f};        // c, a, r, h
+       cylf_hit hit;
+       int rc = cylf_intersect(&ray, &cyl, CYL_CAPS, &hit);
+       if (rc == CYL_HIT)      printf("t=%g +- %g\n", hit.t, hit.t_err);   // t=4 +- 4.8e-07
+       else if (rc < 0)        printf("error: %s\n", cyl_strerror(rc));
+
+   Drop the file anywhere; there is no implementation macro: every function is `static inline`
+   (see CYL_DEF). The float API is cylf_*, the double API cyld_*; both come from one body below
+   that this file includes twice, so the debugger shows real line numbers. Link with -lm unless
+   the compiler inlines sqrt and fma (gcc/clang with -fno-math-errno and a target FMA, e.g.
+   -march=x86-64-v3, Cortex-M4F, RV32F).
+
+   API CONTRACT
+   ============
+   Geometry. The surface is the set of points at distance r from the axis line through c whose
+   axial coordinate v = â·(x − c) lies in [−h/2, h/2]; â = a/|a|. The cap at c − â·h/2 is
+   CYL_CAP_LOW, the one at c + â·h/2 is CYL_CAP_HIGH.
+     - a may have any nonzero length; only its direction counts.
+     - h = +INFINITY is the infinite tube (CYL_CAPS then changes nothing).
+     - default: the open tube (curved wall only); CYL_CAPS: the solid capped cylinder.
+   Ray. x(t) = o + t·d, d of any nonzero length, t in units of d; accepted t in [tmin, tmax]
+   (inclusive; ±INFINITY allowed). Hits whose t is not representable count as misses.
+
+   int cylf_intersect(const cylf_ray*, const cylf_cylinder*, unsigned opts, cylf_hit *hit)
+       The nearest hit with tmin <= t <= tmax: returns CYL_HIT and fills *hit, or CYL_MISS, or a
+       negative CYL_E_* code. On a miss or an error *hit is not touched, so it can be a caller's
+       closest-hit record.
+   int cylf_intersect_all(ray, cyl, opts, cylf_hit hits[2])
+       Every hit in range (at most 2), sorted by t; returns the count (0, 1, 2) or an error.
+       Open tube: both wall crossings. Capped solid: entry and exit. hits[i] for i >= count
+       are not touched.
+   int cylf_occluded(ray, cyl, opts)
+       1 if anything is hit in range, 0 if not, or an error: the shadow-ray test, the cheapest.
+   cylf_cylinder cylf_from_segment(const float p0[3], const float p1[3], float r)
+       The cylinder whose axis runs from p0 (low cap) to p1 (high cap): pipes, bonds, bones.
+       p0 == p1 gives h = 0, which intersect reports as CYL_E_HEIGHT.
+   const char *cyl_strerror(int code)
+       A short English description of any return value.
+
+   The hit. t; t_err: the exact intersection of the given (already rounded) inputs with the
+   reported part lies in [t − t_err, t + t_err] (a bound derived from a residual evaluated in
+   the same precision, see NUMERICAL NOTES); n: unit normal, facing the ray origin (n·d <= 0)
+   by default, the geometric outward normal with CYL_OUTWARD; v: axial coordinate of the hit,
+   within [−h/2, h/2] (exactly ±h/2 on a cap); part: CYL_SIDE, CYL_CAP_LOW, CYL_CAP_HIGH;
+   flags: a set of
+     CYL_F_INSIDE    the ray meets the surface from inside (it leaves the solid, or crosses the
+                     tube's wall outward: an origin inside gets this on its first hit);
+     CYL_F_TANGENT   a grazing wall contact: e = 1 − ρ²/r² lies within ±CYL_TANGENT_TOL, where ρ
+                     is the distance between the ray line and the axis line. Such a contact
+                     counts as a hit (both crossings, at or near the same t) unless
+                     CYL_NO_TANGENT is given; there t is only determined to about √u (see
+                     NUMERICAL NOTES) and t_err says so.
+     CYL_F_PARALLEL  sin(angle between d and a) <= CYL_PARALLEL_TOL: the direction is parallel
+                     to the axis within the rounding of its own components, so the wall crossing
+                     (t >= dist/(|d|·sin), beyond 1/u radii) is not determined by the data. The
+                     wall is then never hit; with CYL_CAPS a cap is hit where the ray point lies
+                     inside its disk. No inf, NaN or division by zero either way.
+   A hit exactly on the rim (the circle where wall and cap meet) is reported as CYL_SIDE.
+
+   Options (bits of opts)
+     CYL_CAPS          solid capped cylinder instead of the open tube
+     CYL_OUTWARD       outward normal instead of the ray-facing one
+     CYL_NO_TANGENT    grazing contacts within the tangent tolerance are misses
+     CYL_PRECISE       precise tier: error-free transformations (TwoSum, FMA TwoProd,
+                       compensated dot products) for o − c, the cross products and the
+                       coefficients, and one compensated Newton step on each wall root
+     CYL_NO_NORMAL     skip the normal: hit.n = {0, 0, 0}
+     CYL_NO_ERRBOUND   skip the bound: hit.t_err = +INFINITY
+     CYL_TRUSTED       skip input validation (NULL and option checks remain): the caller
+                       guarantees finite inputs, nonzero d and a, r > 0, h > 0, tmin <= tmax
+   Pass options as constants where you can: the functions are inline, so unused paths fold
+   away (measured: see `make sizes`).
+
+   Errors, checked in this order; *hit is never touched on an error:
+     CYL_E_NULL (-1) a NULL pointer            CYL_E_RADIUS (-5) r <= 0, NaN or infinite
+     CYL_E_NONFINITE (-2) NaN/inf in o, d, c, a CYL_E_HEIGHT (-6) h <= 0 or NaN
+     CYL_E_ZERO_DIR (-3) d == 0                 CYL_E_TRANGE (-7) tmin > tmax, or a NaN
+     CYL_E_ZERO_AXIS (-4) a == 0                CYL_E_OPTION (-8) unknown or compiled-out bit
+
+   CONFIGURATION (define before including)
+   =============
+     macro                 default                      effect
+     CYL_NO_FLOAT          undefined                    leave out cylf_* (and its code)
+     CYL_NO_DOUBLE         undefined                    leave out cyld_*: no double anywhere
+     CYL_NO_PRECISE        undefined                    compile out the precise tier
+                                                        (CYL_PRECISE gives CYL_E_OPTION)
+     CYL_DEF               static inline                qualifier of every function
+     CYL_SQRTF, CYL_SQRT   __builtin_sqrt[f] (gcc,      square roots; <math.h> is included
+                           clang), else sqrt[f]          only when a non-builtin default is used
+     CYL_FMAF, CYL_FMA     __builtin_fma[f], else fma[f] fused multiply-add; must be correctly
+                                                        rounded (a real FMA or libm's)
+     CYL_TANGENT_TOLF      2^-16 = 2^-(24-8)            tangent band on e = 1 − ρ²/r²
+     CYL_TANGENT_TOL       2^-45 = 2^-(53-8)
+     CYL_PARALLEL_TOLF     2^-24 = u (float)            parallel bound on sin(angle)
+     CYL_PARALLEL_TOL      2^-53 = u (double)
+     CYL_HEADER_FILENAME   "cylinder_isect.h"           how this file includes itself
+   Why these tolerances. Tangent: the default path computes e with an absolute error below
+   (8 + 8·|w⊥|/r)·u (w = o − c; see the error analysis at cyl__solve), so 256u = 2^-(p−8)
+   classifies every contact whose |e| exceeds it correctly for origins within about 30 radii,
+   and it is the band inside which the tests accept either answer. Parallel: below sin = u a
+   half-ulp change of one component of d makes it exactly parallel: the wall crossing is not
+   a function of the data any more.
+
+   NUMERICAL NOTES
+   ===============
+   u = 2^-24 (float), 2^-53 (double). The method, with a source for each step:
+     1. Exact power-of-two prescaling of a, d, and of the lengths (o − c, r, h), so nothing
+        overflows or underflows for finite inputs whose answer is representable; a scene scaled
+        by 2^k gives bit-identical t/2^k... results (tests check 2^±50 float, 2^±400 double).
+     2. Cross products s = a × d, m = a × (o − c) with Kahan's difference of products (relative
+        error <= 2u per component: Jeannerod, Louvet, Muller, Math. Comp. 82, 2013), never
+        projections: no cancellation for rays near the axis direction.
+     3. Geometric discriminant B² − AC = |a|²(r²|s|² − P²), P = (o − c)·s (Ray Tracing Gems,
+        ch. 7; pbrt-v4 cylinders): no difference of large squares when the origin is far.
+     4. Stable root pairing q = −(B + sgn(B)√Δ), t = q/A and C/q (Numerical Recipes §5.6).
+     5. Caps by clipping the wall interval with the slab between the cap planes (Cychosz and
+        Waggenspack, Graphics Gems IV): watertight at the rim.
+     6. t_err: the residual f(t) = |a × (x(t) − c)|² − r²|a|² (= |a|²|s|²(t − t1)(t − t2)) is
+        evaluated at the returned t with a componentwise bound on its rounding error (standard
+        model, Higham, "Accuracy and Stability of Numerical Algorithms", ch. 3), and the root
+        nearest t is bounded by min(2F/|f'|, √(F/A)), F = |f| + its error bound. Near tangency
+        this is the inherent √ term. Caps: the same with the plane's linear residual.
+     7. CYL_PRECISE: TwoSum for o − c, FMA TwoProd for the cross products, compensated dot
+        products for P, B and C (Ogita, Rump, Oishi, SIAM J. Sci. Comput. 26, 2005), then one
+        Newton step on each wall root with the residual evaluated the same way.
+   Measured accuracy against an exact MPFR reference: see bench/REPORT.md (`make report`);
+   the tests assert the targets on a fixed-seed sample.
+   Conditioning: near tangency a relative input change ε moves t by about √ε·r/(|d|·sin);
+   for an origin at distance |w| from the axis, the rounding of o − c alone (u·|w|) decides
+   hit or miss once |w| > r/u on the default path; CYL_PRECISE removes that term.
+
+   WHAT IT DOES NOT DO
+   ===================
+   No ray packets or SIMD batches, no BVH, no elliptic or oblique cylinders, no cones, no
+   texture coordinates beyond v. It does not nudge spawned rays: use tmin or the t_err of the
+   previous hit for that. Results assume IEEE-754 arithmetic with FLT_EVAL_METHOD == 0 (true on
+   x86-64 SSE, ARM, RISC-V) and no -ffast-math: the file refuses to build otherwise.
+
+   LICENSE: MIT. Copyright (c) 2026 the cylinder_isect developers.
+*/
+#if !defined(CYL__BODY)
+#ifndef CYLINDER_ISECT_H
+#define CYLINDER_ISECT_H
+
+#define CYL_VERSION_MAJOR 1
+#define CYL_VERSION_MINOR 0
+#define CYL_VERSION_PATCH 0
+
+#if defined(__FAST_MATH__)
+#error "cylinder_isect.h: -ffast-math reorders and drops the operations the error-free transformations and the error bounds rely on; build this translation unit without it"
+#endif
+#if defined(CYL_NO_FLOAT) && defined(CYL_NO_DOUBLE)
+#error "cylinder_isect.h: CYL_NO_FLOAT and CYL_NO_DOUBLE together leave nothing"
+#endif
+
+#include <float.h>
+#include <stdint.h>
+#if !defined(FLT_EVAL_METHOD) || FLT_EVAL_METHOD != 0
+#error "cylinder_isect.h: needs FLT_EVAL_METHOD == 0 (no excess precision, e.g. x87); use SSE2 or a target with native float/double arithmetic"
+#endif
+
+#ifndef CYL_DEF
+#define CYL_DEF static inline
+#endif
+#ifndef CYL_HEADER_FILENAME
+#define CYL_HEADER_FILENAME "cylinder_isect.h"
+#endif
+
+/* Return values. */
+#define CYL_HIT          1
+#define CYL_MISS         0
+#define CYL_E_NULL      (-1)
+#define CYL_E_NONFINITE (-2)
+#define CYL_E_ZERO_DIR  (-3)
+#define CYL_E_ZERO_AXIS (-4)
+#define CYL_E_RADIUS    (-5)
+#define CYL_E_HEIGHT    (-6)
+#define CYL_E_TRANGE    (-7)
+#define CYL_E_OPTION    (-8)
+
+/* Option bits. */
+#define CYL_CAPS         0x01u
+#define CYL_OUTWARD      0x02u
+#define CYL_NO_TANGENT   0x04u
+#define CYL_PRECISE      0x08u
+#define CYL_NO_NORMAL    0x10u
+#define CYL_NO_ERRBOUND  0x20u
+#define CYL_TRUSTED      0x40u
+#define CYL_OPTIONS_ALL  0x7fu
+
+/* hit.part */
+#define CYL_SIDE     0
+#define CYL_CAP_LOW  1
+#define CYL_CAP_HIGH 2
+
+/* hit.flags */
+#define CYL_F_INSIDE   0x1u
+#define CYL_F_TANGENT  0x2u
+#define CYL_F_PARALLEL 0x4u
+
+/* Tolerances (see "Why these tolerances" above). Written as quotients so that C++11, which has
+   no hexadecimal float literals, reads them too. */
+#ifndef CYL_TANGENT_TOLF
+#define CYL_TANGENT_TOLF (1.0f / 65536.0f)                    /* 2^-16 */
+#endif
+#ifndef CYL_TANGENT_TOL
+#define CYL_TANGENT_TOL (1.0 / 35184372088832.0)              /* 2^-45 */
+#endif
+#ifndef CYL_PARALLEL_TOLF
+#define CYL_PARALLEL_TOLF (1.0f / 16777216.0f)                /* 2^-24 */
+#endif
+#ifndef CYL_PARALLEL_TOL
+#define CYL_PARALLEL_TOL (1.0 / 9007199254740992.0)           /* 2^-53 */
+#endif
+
+#ifdef CYL_NO_PRECISE
+#define CYL__SUPPORTED (CYL_OPTIONS_ALL & ~CYL_PRECISE)
+#else
+#define CYL__SUPPORTED CYL_OPTIONS_ALL
+#endif
+
+/* Environment hooks: builtins where the compiler has them (no header, inlined with a target
+   FMA and -fno-math-errno), <math.h> otherwise. */
+#if defined(__GNUC__) || defined(__clang__)
+#define CYL__MEMCPY(d, s, n) __builtin_memcpy(d, s, n)
+#ifndef CYL_SQRTF
+#define CYL_SQRTF(x) __builtin_sqrtf(x)
+#endif
+#ifndef CYL_SQRT
+#define CYL_SQRT(x) __builtin_sqrt(x)
+#endif
+#ifndef CYL_FMAF
+#define CYL_FMAF(a, b, c) __builtin_fmaf(a, b, c)
+#endif
+#ifndef CYL_FMA
+#define CYL_FMA(a, b, c) __builtin_fma(a, b, c)
+#endif
+#else
+#include <string.h>
+#define CYL__MEMCPY(d, s, n) memcpy(d, s, n)
+#if !defined(CYL_SQRTF) || !defined(CYL_SQRT) || !defined(CYL_FMAF) || !defined(CYL_FMA)
+#include <math.h>
+#endif
+#ifndef CYL_SQRTF
+#define CYL_SQRTF(x) sqrtf(x)
+#endif
+#ifndef CYL_SQRT
+#define CYL_SQRT(x) sqrt(x)
+#endif
+#ifndef CYL_FMAF
+#define CYL_FMAF(a, b, c) fmaf(a, b, c)
+#endif
+#ifndef CYL_FMA
+#define CYL_FMA(a, b, c) fma(a, b, c)
+#endif
+#endif
+
+CYL_DEF const char *cyl_strerror(int code)
+{
+    switch (code) {
+    case CYL_HIT: return "hit";
+    case CYL_MISS: return "miss";
+    case CYL_E_NULL: return "a pointer argument is NULL";
+    case CYL_E_NONFINITE: return "a coordinate of o, d, c or a is NaN or infinite";
+    case CYL_E_ZERO_DIR: return "the ray direction d is the zero vector";
+    case CYL_E_ZERO_AXIS: return "the cylinder axis a is the zero vector";
+    case CYL_E_RADIUS: return "the radius is not a positive finite number";
+    case CYL_E_HEIGHT: return "the height is not positive (NaN or <= 0)";
+    case CYL_E_TRANGE: return "the t range is empty or NaN (tmin > tmax)";
+    case CYL_E_OPTION: return "unknown or compiled-out option bit";
+    default: return "unknown cylinder_isect return code";
+    }
+}
+
+/* ---- float instance ---- */
+#ifndef CYL_NO_FLOAT
+#define CYL__BODY 1
+#define CYL__R float
+#define CYL__UINT uint32_t
+#define CYL__N(x) cylf_##x
+#define CYL__P(x) cyl__f_##x
+#define CYL__C(x) x##f
+#define CYL__SQRTR(x) CYL_SQRTF(x)
+#define CYL__FMAR(a, b, c) CYL_FMAF(a, b, c)
+#define CYL__U (FLT_EPSILON * 0.5f)
+#define CYL__MAXR FLT_MAX
+#define CYL__MINR FLT_MIN
+#define CYL__MANT 24
+#define CYL__EBIAS 127
+#define CYL__EMASK 0xffu
+#define CYL__TWO_MANT 16777216.0f
+#define CYL__TANG CYL_TANGENT_TOLF
+#define CYL__PARA CYL_PARALLEL_TOLF
+#include CYL_HEADER_FILENAME
+#undef CYL__BODY
+#undef CYL__R
+#undef CYL__UINT
+#undef CYL__N
+#undef CYL__P
+#undef CYL__C
+#undef CYL__SQRTR
+#undef CYL__FMAR
+#undef CYL__U
+#undef CYL__MAXR
+#undef CYL__MINR
+#undef CYL__MANT
+#undef CYL__EBIAS
+#undef CYL__EMASK
+#undef CYL__TWO_MANT
+#undef CYL__TANG
+#undef CYL__PARA
+#endif
+
+/* ---- double instance ---- */
+#ifndef CYL_NO_DOUBLE
+#define CYL__BODY 1
+#define CYL__R double
+#define CYL__UINT uint64_t
+#define CYL__N(x) cyld_##x
+#define CYL__P(x) cyl__d_##x
+#define CYL__C(x) x
+#define CYL__SQRTR(x) CYL_SQRT(x)
+#define CYL__FMAR(a, b, c) CYL_FMA(a, b, c)
+#define CYL__U (DBL_EPSILON * 0.5)
+#define CYL__MAXR DBL_MAX
+#define CYL__MINR DBL_MIN
+#define CYL__MANT 53
+#define CYL__EBIAS 1023
+#define CYL__EMASK 0x7ffu
+#define CYL__TWO_MANT 9007199254740992.0
+#define CYL__TANG CYL_TANGENT_TOL
+#define CYL__PARA CYL_PARALLEL_TOL
+#include CYL_HEADER_FILENAME
+#undef CYL__BODY
+#undef CYL__R
+#undef CYL__UINT
+#undef CYL__N
+#undef CYL__P
+#undef CYL__C
+#undef CYL__SQRTR
+#undef CYL__FMAR
+#undef CYL__U
+#undef CYL__MAXR
+#undef CYL__MINR
+#undef CYL__MANT
+#undef CYL__EBIAS
+#undef CYL__EMASK
+#undef CYL__TWO_MANT
+#undef CYL__TANG
+#undef CYL__PARA
+#endif
+
+#endif /* CYLINDER_ISECT_H */
+
+#else /* CYL__BODY: one precision, written once; included above with CYL__R = float, double */
+
+typedef struct CYL__N(ray) { CYL__R o[3], d[3], tmin, tmax; } CYL__N(ray);
+typedef struct CYL__N(cylinder) { CYL__R c[3], a[3], r, h; } CYL__N(cylinder);
+typedef struct CYL__N(hit) {
+    CYL__R t, t_err, n[3], v;
+    int part;
+    unsigned flags;
+} CYL__N(hit);
+
+/* ------------------------------------------------------------------ small exact tools */
+
+CYL_DEF CYL__R CYL__P(abs)(CYL__R x) { return x < 0 ? -x : x; }
+CYL_DEF CYL__R CYL__P(max)(CYL__R x, CYL__R y) { return x > y ? x : y; }
+CYL_DEF int CYL__P(finite)(CYL__R x) { return x >= -CYL__MAXR && x <= CYL__MAXR; }
+CYL_DEF int CYL__P(nonzero)(CYL__R x) { return x < 0 || x > 0; }
+CYL_DEF CYL__R CYL__P(amax3)(const CYL__R x[3])
+{
+    return CYL__P(max)(CYL__P(abs)(x[0]), CYL__P(max)(CYL__P(abs)(x[1]), CYL__P(abs)(x[2])));
+}
+
+/* floor(log2(x)) for finite x > 0, from the exponent bits: no libm, exact for subnormals. */
+CYL_DEF int CYL__P(ilogb)(CYL__R x)
+{
+    CYL__UINT b;
+    int e, shift = 0;
+    CYL__MEMCPY(&b, &x, sizeof b);
+    e = (int)((b >> (CYL__MANT - 1)) & CYL__EMASK);
+    if (e == 0) { /* subnormal: 2^MANT brings it into the normal range exactly */
+        x *= CYL__TWO_MANT;
+        CYL__MEMCPY(&b, &x, sizeof b);
+        e = (int)((b >> (CYL__MANT - 1)) & CYL__EMASK);
+        shift = CYL__MANT;
+    }
+    return e - CYL__EBIAS - shift;
+}
+
+/* 2^k for k in the normal exponent range [1 - EBIAS, EBIAS]. */
+CYL_DEF CYL__R CYL__P(exp2i)(int k)
+{
+    CYL__UINT b = (CYL__UINT)(k + CYL__EBIAS) << (CYL__MANT - 1);
+    CYL__R x;
+    CYL__MEMCPY(&x, &b, sizeof x);
+    return x;
+}
+
+/* Two factors whose product is 2^k, each a normal number, for |k| up to twice the exponent
+   range. Both move x the same way, so x * f1 * f2 rounds at most where the final value is
+   subnormal. */
+CYL_DEF void CYL__P(pow2pair)(int k, CYL__R f[2])
+{
+    int lo = 1 - CYL__EBIAS, hi = CYL__EBIAS;
+    int k1 = k < lo ? lo : (k > hi ? hi : k);
+    int k2 = k - k1;
+    k2 = k2 < lo ? lo : (k2 > hi ? hi : k2);
+    f[0] = CYL__P(exp2i)(k1);
+    f[1] = CYL__P(exp2i)(k2);
+}
+
+CYL_DEF CYL__R CYL__P(scale)(CYL__R x, int k)
+{
+    CYL__R f[2];
+    CYL__P(pow2pair)(k, f);
+    return x * f[0] * f[1];
+}
+
+/* ab − cd with Kahan's FMA algorithm: relative error <= 2u (Jeannerod, Louvet, Muller 2013). */
+CYL_DEF CYL__R CYL__P(dop)(CYL__R a, CYL__R b, CYL__R c, CYL__R d)
+{
+    CYL__R w = c * d;
+    CYL__R e = CYL__FMAR(-c, d, w);
+    CYL__R f = CYL__FMAR(a, b, -w);
+    return f + e;
+}
+
+CYL_DEF void CYL__P(cross)(const CYL__R x[3], const CYL__R y[3], CYL__R z[3])
+{
+    z[0] = CYL__P(dop)(x[1], y[2], x[2], y[1]);
+    z[1] = CYL__P(dop)(x[2], y[0], x[0], y[2]);
+    z[2] = CYL__P(dop)(x[0], y[1], x[1], y[0]);
+}
+
+CYL_DEF CYL__R CYL__P(dot)(const CYL__R x[3], const CYL__R y[3])
+{
+    return CYL__FMAR(x[2], y[2], CYL__FMAR(x[1], y[1], x[0] * y[0]));
+}
+
+/* |x|·|y| summed componentwise: the scale of a dot product's rounding error. */
+CYL_DEF CYL__R CYL__P(adot)(const CYL__R x[3], const CYL__R y[3])
+{
+    return CYL__P(abs)(x[0] * y[0]) + CYL__P(abs)(x[1] * y[1]) + CYL__P(abs)(x[2] * y[2]);
+}
+
+#ifndef CYL_NO_PRECISE
+/* Error-free transformations (Knuth's TwoSum; TwoProd with FMA) and a compensated
+   accumulator in the style of Ogita, Rump and Oishi's Sum2/Dot2: hi + lo carries the sum with
+   error about u·|sum| + γ²·Σ|terms|. */
+typedef struct CYL__P(acc) { CYL__R hi, lo; } CYL__P(acc);
+
+CYL_DEF void CYL__P(two_sum)(CYL__R a, CYL__R b, CYL__R *s, CYL__R *e)
+{
+    CYL__R x = a + b, bb = x - a;
+    *s = x;
+    *e = (a - (x - bb)) + (b - bb);
+}
+
+CYL_DEF void CYL__P(acc_add)(CYL__P(acc) *s, CYL__R x)
+{
+    CYL__R e;
+    CYL__P(two_sum)(s->hi, x, &s->hi, &e);
+    s->lo += e;
+}
+
+CYL_DEF void CYL__P(acc_prod)(CYL__P(acc) *s, CYL__R x, CYL__R y)
+{
+    CYL__R p = x * y;
+    CYL__R e = CYL__FMAR(x, y, -p);
+    CYL__P(acc_add)(s, p);
+    s->lo += e;
+}
+
+/* z = x × (yh + yl) as a double word zh + zl (x exact): each component's two products are
+   split exactly, so zh + zl is accurate to O(u²) relative. */
+CYL_DEF void CYL__P(cross_dw)(const CYL__R x[3], const CYL__R yh[3], const CYL__R yl[3],
+                              CYL__R zh[3], CYL__R zl[3])
+{
+    int j;
+    for (j = 0; j < 3; j++) {
+        int k = (j + 1) % 3, l = (j + 2) % 3;
+        CYL__P(acc) s;
+        s.hi = 0;
+        s.lo = x[k] * yl[l] - x[l] * yl[k];
+        CYL__P(acc_prod)(&s, x[k], yh[l]);
+        CYL__P(acc_prod)(&s, -x[l], yh[k]);
+        zh[j] = s.hi + s.lo;
+        zl[j] = s.lo - (zh[j] - s.hi);
+    }
+}
+
+/* (nh + nl) / (dh + dl) to about u: one correction of the quotient with the exact remainder
+   of nh − q·dh (FMA). */
+CYL_DEF CYL__R CYL__P(div_dw)(CYL__R nh, CYL__R nl, CYL__R dh, CYL__R dl)
+{
+    CYL__R q = nh / dh;
+    CYL__R rem = CYL__FMAR(-q, dh, nh) + nl - q * dl;
+    return q + rem / dh;
+}
+
+/* Σ (xh + xl)_i (yh + yl)_i into an accumulator. */
+CYL_DEF void CYL__P(acc_dot_dw)(CYL__P(acc) *s, const CYL__R xh[3], const CYL__R xl[3],
+                                const CYL__R yh[3], const CYL__R yl[3])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        CYL__P(acc_prod)(s, xh[i], yh[i]);
+        s->lo += xh[i] * yl[i] + xl[i] * yh[i];
+    }
+}
+#endif
+
+/* ------------------------------------------------------------------ validation */
+
+CYL_DEF int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        if (!CYL__P(finite)(ray->o[i]) || !CYL__P(finite)(ray->d[i]) ||
+            !CYL__P(finite)(cyl->c[i]) || !CYL__P(finite)(cyl->a[i]))
+            return CYL_E_NONFINITE;
+    if (!(CYL__P(amax3)(ray->d) > 0)) return CYL_E_ZERO_DIR;
+    if (!(CYL__P(amax3)(cyl->a) > 0)) return CYL_E_ZERO_AXIS;
+    if (!(cyl->r > 0) || !(cyl->r <= CYL__MAXR)) return CYL_E_RADIUS;
+    if (!(cyl->h > 0)) return CYL_E_HEIGHT;
+    if (!(ray->tmin <= ray->tmax)) return CYL_E_TRANGE;
+    return 0;
+}
+
+CYL_DEF int CYL__P(check)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
+{
+    if (!ray || !cyl) return CYL_E_NULL;
+    if (opts & ~(unsigned)CYL__SUPPORTED) return CYL_E_OPTION;
+    if (opts & CYL_TRUSTED) return 0;
+    return CYL__P(validate)(ray, cyl);
+}
+
+/* ------------------------------------------------------------------ the solver */
+
+/* Everything below works in a frame scaled by exact powers of two: the largest component of a
+   and of d in [1, 2), the largest of |o − c|, r, h in [1, 2). A user t is the frame's t times
+   2^e. The scaled w (= o − c) is exact up to its one rounding (default path) or exactly
+   wh + wl (precise path). */
+typedef struct CYL__P(frame) {
+    CYL__R a[3], d[3], w[3], wl[3];
+    CYL__R werr[3];       /* bound on |exact w − w| componentwise, as used by the bounds   */
+    CYL__R r, H;          /* radius, half height (+inf: infinite tube)                     */
+    CYL__R aa, na;        /* |a|², |a|                                                     */
+    CYL__R s[3], sl[3];   /* s = a × d (+ low part on the precise path)                    */
+    CYL__R m[3], ml[3];   /* m = a × w (+ low part)                                        */
+    CYL__R A, R2;         /* |s|², r²|a|²                                                  */
+    CYL__R ad, aw;        /* a·d, a·w                                                      */
+    CYL__R awl, nal, adl; /* precise path: low parts of a·w, |a| and a·d                    */
+    int e;                /* user t = frame t · 2^e                                        */
+    int el;               /* user length = frame length · 2^el                             */
+    int precise;
+} CYL__P(frame);
+
+/* One crossing found by the solver, before the t range and the output. */
+typedef struct CYL__P(cand) {
+    CYL__R t;             /* frame t                                                       */
+    CYL__R tu;            /* user t                                                        */
+    int part;
+    unsigned flags;
+} CYL__P(cand);
+
+CYL_DEF void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                             unsigned opts, CYL__P(frame) *f)
+{
+    CYL__R o[3], c[3], fa[2], fd[2], fl[2], L, rr = cyl->r, hh = cyl->h;
+    int i, ka, kd, kl, pre = 0;
+    for (i = 0; i < 3; i++) { o[i] = ray->o[i]; c[i] = cyl->c[i]; }
+    /* o − c overflows only when both are near the top of the range: halve the lengths
+       first (exact there), and account for it in the exponent. */
+    if (!(CYL__P(max)(CYL__P(amax3)(o), CYL__P(amax3)(c)) <= CYL__MAXR * CYL__C(0.25))) {
+        for (i = 0; i < 3; i++) { o[i] *= CYL__C(0.5); c[i] *= CYL__C(0.5); }
+        rr *= CYL__C(0.5);
+        hh *= CYL__C(0.5);
+        pre = 1;
+    }
+#ifndef CYL_NO_PRECISE
+    f->precise = (opts & CYL_PRECISE) != 0;
+#else
+    (void)opts;
+    f->precise = 0;
+#endif
+    for (i = 0; i < 3; i++) {
+#ifndef CYL_NO_PRECISE
+        if (f->precise)
+            CYL__P(two_sum)(o[i], -c[i], &f->w[i], &f->wl[i]);
+        else
+#endif
+        {
+            f->w[i] = o[i] - c[i];
+            f->wl[i] = 0;
+        }
+    }
+    L = CYL__P(max)(CYL__P(amax3)(f->w), rr);
+    if (hh <= CYL__MAXR) L = CYL__P(max)(L, hh);
+    ka = CYL__P(ilogb)(CYL__P(amax3)(cyl->a));
+    kd = CYL__P(ilogb)(CYL__P(amax3)(ray->d));
+    kl = CYL__P(ilogb)(L);
+    CYL__P(pow2pair)(-ka, fa);
+    CYL__P(pow2pair)(-kd, fd);
+    CYL__P(pow2pair)(-kl, fl);
+    for (i = 0; i < 3; i++) {
+        f->a[i] = cyl->a[i] * fa[0] * fa[1];
+        f->d[i] = ray->d[i] * fd[0] * fd[1];
+        f->w[i] = f->w[i] * fl[0] * fl[1];
+        f->wl[i] = f->wl[i] * fl[0] * fl[1];
+        /* default: |exact − w| <= u|w|; precise: the exact w is w + wl. The absolute term
+           covers a component that the scaling made subnormal. */
+        f->werr[i] = (f->precise ? CYL__P(abs)(f->wl[i]) : CYL__U * CYL__P(abs)(f->w[i])) +
+                     CYL__MINR;
+    }
+    f->r = rr * fl[0] * fl[1];
+    f->H = hh * fl[0] * fl[1] * CYL__C(0.5);
+    f->e = kl + pre - kd;
+    f->el = kl + pre;
+    f->aa = CYL__P(dot)(f->a, f->a);
+    f->na = CYL__SQRTR(f->aa);
+}
+
+/* The wall. The distance of x(t) = w + t·d from the axis is |a × x(t)|/|a|, so the crossings
+   solve f(t) = |m + t·s|² − r²|a|² = A t² + 2B t + C = 0 with s = a × d, m = a × w,
+   A = |s|², B = m·s, C = |m|² − r²|a|². Its discriminant B² − AC = |a|²·D with
+   D = r²A − P², P = w·s (Lagrange: |m × s| = |a|·|w·s|), and D = r²A·e with e = 1 − ρ²/r².
+   Error analysis of e on the default path: s and m carry 2u per component, P = w·s carries
+   u|w||s| from the rounding of w plus 4u|w||s| from s and the dot, so |ê − e| <=
+   8u(1 + |w⊥|/r) for an origin near the axis plane, which is what CYL_TANGENT_TOL is set
+   against. Returns 0 (no crossing), or 1 with t[0] <= t[1] and *tangent set. */
+CYL_DEF int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2], int *tangent)
+{
+    CYL__R P, D, B, C, sq, q, band, r2 = f->r * f->r;
+    int clamped = 0;
+#ifndef CYL_NO_PRECISE
+    if (f->precise) {
+        CYL__P(acc) sp, sb, sc, sd;
+        int i;
+        CYL__P(cross_dw)(f->a, f->w, f->wl, f->m, f->ml);
+        sp.hi = sp.lo = sb.hi = sb.lo = sc.hi = sc.lo = sd.hi = sd.lo = 0;
+        CYL__P(acc_dot_dw)(&sp, f->w, f->wl, f->s, f->sl);
+        P = sp.hi + sp.lo;
+        CYL__P(acc_dot_dw)(&sb, f->m, f->ml, f->s, f->sl);
+        B = sb.hi + sb.lo;
+        /* C = |m|² − r²|a|² and D = r²|s|² − P², each as one compensated sum. */
+        CYL__P(acc_dot_dw)(&sc, f->m, f->ml, f->m, f->ml);
+        for (i = 0; i < 3; i++) {
+            CYL__R ra = f->r * f->a[i], ral = CYL__FMAR(f->r, f->a[i], -ra);
+            CYL__R rs = f->r * f->s[i], rsl = CYL__FMAR(f->r, f->s[i], -rs);
+            CYL__P(acc_prod)(&sc, -ra, ra);
+            sc.lo -= 2 * ra * ral;
+            CYL__P(acc_prod)(&sd, rs, rs);
+            sd.lo += 2 * rs * (rsl + f->r * f->sl[i]);
+        }
+        C = sc.hi + sc.lo;
+        CYL__P(acc_prod)(&sd, -P, P);
+        D = sd.hi + sd.lo;
+    } else
+#endif
+    {
+        CYL__P(cross)(f->a, f->w, f->m);
+        P = CYL__P(dot)(f->w, f->s);
+        B = CYL__P(dot)(f->m, f->s);
+        C = CYL__FMAR(-r2, f->aa, CYL__P(dot)(f->m, f->m));
+        D = CYL__P(dop)(r2, f->A, P, P);
+    }
+    band = CYL__TANG * r2 * f->A;
+    if (D < -band) return 0;
+    *tangent = D <= band;
+    if (*tangent && (opts & CYL_NO_TANGENT)) return 0;
+    if (D < 0) { D = 0; clamped = 1; }
+    sq = CYL__SQRTR(f->aa * D);
+    q = -(B + (B < 0 ? -sq : sq));
+    if (clamped || !CYL__P(nonzero)(q)) {
+        /* a contact (within the band) at the point of closest approach */
+        t[0] = t[1] = -B / f->A;
+        return 1;
+    }
+    t[0] = q / f->A;
+    t[1] = C / q;
+    if (t[0] > t[1]) { CYL__R x = t[0]; t[0] = t[1]; t[1] = x; }
+#ifndef CYL_NO_PRECISE
+    if (f->precise) {
+        /* one Newton step per root on the residual f(t) = |m + t s|² − r²|a|², evaluated
+           with the same compensated sums: the start is within a few ulps, so the step
+           leaves the rounding of the residual, about u relative. */
+        int k, i;
+        for (k = 0; k < 2; k++) {
+            CYL__P(acc) sf;
+            CYL__R fp = 0;
+            sf.hi = sf.lo = 0;
+            for (i = 0; i < 3; i++) {
+                CYL__R p = t[k] * f->s[i], pe = CYL__FMAR(t[k], f->s[i], -p), yh, ye, yl;
+                CYL__R ra = f->r * f->a[i], ral = CYL__FMAR(f->r, f->a[i], -ra);
+                CYL__P(two_sum)(f->m[i], p, &yh, &ye);
+                yl = ye + pe + f->ml[i] + t[k] * f->sl[i];
+                CYL__P(acc_prod)(&sf, yh, yh);
+                sf.lo += 2 * yh * yl;
+                CYL__P(acc_prod)(&sf, -ra, ra);
+                sf.lo -= 2 * ra * ral;
+                fp += yh * f->s[i];
+            }
+            if (CYL__P(nonzero)(fp)) t[k] -= (sf.hi + sf.lo) / (2 * fp);
+        }
+        if (t[0] > t[1]) { CYL__R x = t[0]; t[0] = t[1]; t[1] = x; }
+    }
+#endif
+    return 1;
+}
+
+/* The slab between the cap planes v = −H and v = +H along the ray: [sl[0], sl[1]] with the cap
+   part of each end. Returns 0 when the ray runs beside the slab (a·d == 0 outside it). */
+CYL_DEF int CYL__P(slab)(const CYL__P(frame) *f, CYL__R sl[2], int part[2])
+{
+    CYL__R hna, tl, th;
+    if (!(f->H <= CYL__MAXR)) { /* infinite tube */
+        sl[0] = -CYL__MAXR * 2; /* -inf */
+        sl[1] = CYL__MAXR * 2;
+        part[0] = part[1] = CYL_SIDE;
+        return 1;
+    }
+    hna = f->H * f->na;
+    if (!CYL__P(nonzero)(f->ad)) {
+        sl[0] = -CYL__MAXR * 2;
+        sl[1] = CYL__MAXR * 2;
+        part[0] = part[1] = CYL_SIDE;
+        return CYL__P(abs)(f->aw) <= hna;
+    }
+#ifndef CYL_NO_PRECISE
+    if (f->precise) {
+        /* ±H|a| − a·w cancels for an origin near a cap plane: form it from the double-word
+           |a| and a·w, so the only rounding left is the final division's. */
+        CYL__P(acc) lo, hi;
+        lo.hi = lo.lo = 0;
+        CYL__P(acc_prod)(&lo, -f->H, f->na);
+        lo.lo -= f->H * f->nal + f->awl;
+        hi.hi = -lo.hi;
+        hi.lo = -lo.lo - 2 * f->awl;
+        CYL__P(acc_add)(&lo, -f->aw);
+        CYL__P(acc_add)(&hi, -f->aw);
+        tl = CYL__P(div_dw)(lo.hi, lo.lo, f->ad, f->adl);
+        th = CYL__P(div_dw)(hi.hi, hi.lo, f->ad, f->adl);
+    } else
+#endif
+    {
+        tl = (-hna - f->aw) / f->ad;
+        th = (hna - f->aw) / f->ad;
+    }
+    if (tl <= th) {
+        sl[0] = tl; part[0] = CYL_CAP_LOW;
+        sl[1] = th; part[1] = CYL_CAP_HIGH;
+    } else {
+        sl[0] = th; part[0] = CYL_CAP_HIGH;
+        sl[1] = tl; part[1] = CYL_CAP_LOW;
+    }
+    return 1;
+}
+
+/* Is the point x(t) of a cap inside its disk? (Parallel rays only: otherwise the wall interval
+   decides.) |a × x|² <= r²|a|². */
+CYL_DEF int CYL__P(in_disk)(const CYL__P(frame) *f, CYL__R t)
+{
+    CYL__R x[3], y[3];
+    int i;
+    for (i = 0; i < 3; i++) x[i] = CYL__FMAR(t, f->d[i], f->w[i]);
+    CYL__P(cross)(f->a, x, y);
+    return CYL__P(dot)(y, y) <= f->R2;
+}
+
+/* All crossings of the chosen surface (at most 2), sorted, then those in [tmin, tmax]. */
+CYL_DEF int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                          CYL__P(frame) *f, CYL__P(cand) out[2])
+{
+    CYL__P(cand) c[2];
+    CYL__R sl[2], tw[2], fs[2];
+    int sp[2], n = 0, k, kept = 0, tangent = 0;
+    int caps = (opts & CYL_CAPS) != 0;
+    CYL__P(prepare)(ray, cyl, opts, f);
+#ifndef CYL_NO_PRECISE
+    if (f->precise) {
+        CYL__P(acc) s1, s2;
+        CYL__R zero[3] = {0, 0, 0};
+        CYL__P(cross_dw)(f->a, f->d, zero, f->s, f->sl);
+        s1.hi = s1.lo = s2.hi = s2.lo = 0;
+        CYL__P(acc_dot_dw)(&s1, f->a, zero, f->d, zero);
+        f->ad = s1.hi + s1.lo;
+        f->adl = s1.lo - (f->ad - s1.hi);
+        CYL__P(acc_dot_dw)(&s2, f->a, zero, f->w, f->wl);
+        f->aw = s2.hi + s2.lo;
+        f->awl = s2.lo - (f->aw - s2.hi);
+        /* |a| as a double word: na + nal with nal = (aa − na²)/(2 na) from the exact aa */
+        s1.hi = s1.lo = 0;
+        CYL__P(acc_dot_dw)(&s1, f->a, zero, f->a, zero);
+        f->nal = (CYL__FMAR(-f->na, f->na, s1.hi) + s1.lo) / (2 * f->na);
+    } else
+#endif
+    {
+        int i;
+        CYL__P(cross)(f->a, f->d, f->s);
+        for (i = 0; i < 3; i++) f->sl[i] = f->ml[i] = 0;
+        f->ad = CYL__P(dot)(f->a, f->d);
+        f->aw = CYL__P(dot)(f->a, f->w);
+        f->awl = f->nal = f->adl = 0;
+    }
+    f->A = CYL__P(dot)(f->s, f->s);
+    f->R2 = f->r * f->r * f->aa;
+    if (!CYL__P(slab)(f, sl, sp)) return 0;
+    /* sin²(angle) = A / (|a|²|d|²) */
+    if (f->A <= CYL__PARA * CYL__PARA * f->aa * CYL__P(dot)(f->d, f->d)) {
+        if (caps && f->H <= CYL__MAXR) {
+            for (k = 0; k < 2; k++)
+                if (CYL__P(in_disk)(f, sl[k])) {
+                    c[n].t = sl[k];
+                    c[n].part = sp[k];
+                    c[n].flags = CYL_F_PARALLEL | (k ? CYL_F_INSIDE : 0u);
+                    n++;
+                }
+        }
+    } else if (CYL__P(wall)(f, opts, tw, &tangent)) {
+        unsigned tf = tangent ? CYL_F_TANGENT : 0u;
+        if (caps && f->H <= CYL__MAXR) {
+            CYL__R lo = CYL__P(max)(tw[0], sl[0]), hi = tw[1] < sl[1] ? tw[1] : sl[1];
+            if (lo <= hi) {
+                c[0].t = lo;
+                c[0].part = tw[0] >= sl[0] ? CYL_SIDE : sp[0];
+                c[0].flags = c[0].part == CYL_SIDE ? tf : 0u;
+                c[1].t = hi;
+                c[1].part = tw[1] <= sl[1] ? CYL_SIDE : sp[1];
+                c[1].flags = CYL_F_INSIDE | (c[1].part == CYL_SIDE ? tf : 0u);
+                n = 2;
+            }
+        } else {
+            for (k = 0; k < 2; k++)
+                if (tw[k] >= sl[0] && tw[k] <= sl[1]) {
+                    c[n].t = tw[k];
+                    c[n].part = CYL_SIDE;
+                    c[n].flags = tf | (k ? CYL_F_INSIDE : 0u);
+                    n++;
+                }
+        }
+    }
+    CYL__P(pow2pair)(f->e, fs);
+    for (k = 0; k < n; k++) {
+        CYL__R tu = c[k].t * fs[0] * fs[1];
+        if (tu >= ray->tmin && tu <= ray->tmax && CYL__P(finite)(tu)) {
+            out[kept] = c[k];
+            out[kept].tu = tu;
+            kept++;
+        }
+    }
+    return kept;
+}
+
+/* ------------------------------------------------------------------ the output */
+
+/* Rigorous bound on |t − exact crossing| in the frame (see NUMERICAL NOTES 6).
+   Wall: ŷ = m̂ + t ŝ (fma), with |ŷ_j − y_j| <= Ey_j from the 2u of each cross-product
+   component, the error of w propagated through a×, and the fma's own rounding; then
+   F >= |f(t)| and a lower bound of |f'(t)| = 2|s·y| give the nearest root of the exact
+   quadratic f(t + δ) = f(t) + f'δ + Aδ²: |δ| <= min(2F/|f'|, √(F/A)).
+   Cap: the plane's residual g(t) = a·x(t) ∓ H|a| is linear with slope a·d.
+   First-order terms are multiplied by (1 + 2^-8), which covers the second-order ones and the
+   rounding of this evaluation; CYL__MINR terms cover products that underflowed. */
+CYL_DEF CYL__R CYL__P(bound)(const CYL__P(frame) *f, const CYL__P(cand) *c,
+                             const CYL__R y[3], CYL__R ys)
+{
+    const CYL__R u = CYL__U, safe = CYL__C(1.0) + CYL__C(1.0) / CYL__C(256.0);
+    CYL__R t = c->t, at = CYL__P(abs)(t), d;
+    if (c->part == CYL_SIDE) {
+        CYL__R ey[3], g, E, F, Eb = 0, bb, Alo;
+        int j;
+        for (j = 0; j < 3; j++) {
+            int k = (j + 1) % 3, l = (j + 2) % 3;
+            ey[j] = 2 * u * (CYL__P(abs)(f->m[j]) + at * CYL__P(abs)(f->s[j])) +
+                    u * CYL__P(abs)(y[j]) + CYL__P(abs)(f->a[k]) * f->werr[l] +
+                    CYL__P(abs)(f->a[l]) * f->werr[k] + CYL__MINR;
+        }
+        g = CYL__P(dot)(y, y);
+        E = 3 * u * g + 5 * u * f->R2;
+        for (j = 0; j < 3; j++) {
+            E += (2 * CYL__P(abs)(y[j]) + ey[j]) * ey[j];
+            Eb += CYL__P(abs)(f->s[j]) * (ey[j] + 5 * u * CYL__P(abs)(y[j]));
+        }
+        g -= f->R2;
+        E = (E + u * CYL__P(abs)(g) + CYL__MINR) * safe;
+        F = CYL__P(abs)(g) + E;
+        bb = 2 * (CYL__P(abs)(ys) - Eb * safe);     /* |f'| >= bb */
+        Alo = f->A * (1 - 8 * u);                   /* A >= Alo   */
+        if (bb > 0 && bb * bb >= 4 * F * Alo)
+            d = 2 * F / bb;
+        else
+            d = CYL__SQRTR(F / Alo);
+    } else {
+        CYL__R x[3], ex = 0, g, Eg, slope;
+        int i;
+        for (i = 0; i < 3; i++) {
+            x[i] = CYL__FMAR(t, f->d[i], f->w[i]);
+            ex += CYL__P(abs)(f->a[i]) * (f->werr[i] + u * CYL__P(abs)(x[i]) + CYL__MINR);
+        }
+        g = CYL__P(dot)(f->a, x);
+        Eg = ex + 3 * u * CYL__P(adot)(f->a, x) + 4 * u * f->H * f->na;
+        g += c->part == CYL_CAP_LOW ? f->H * f->na : -f->H * f->na;
+        Eg = (Eg + u * CYL__P(abs)(g) + CYL__MINR) * safe;
+        slope = CYL__P(abs)(f->ad) - 3 * u * CYL__P(adot)(f->a, f->d) * safe;
+        d = slope > 0 ? (CYL__P(abs)(g) + Eg) / slope : CYL__MAXR * 2;
+    }
+    return d * safe;
+}
+
+CYL_DEF void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *c, unsigned opts,
+                            CYL__N(hit) *hit)
+{
+    CYL__R no[3] = {0, 0, 0}, y[3], ys = 0, v, fs[2], face = 1;
+    int i;
+    hit->t = c->tu;
+    hit->part = c->part;
+    hit->flags = c->flags;
+    if (c->part == CYL_SIDE) {
+        CYL__R len2;
+        /* y = a × x(t) = m + t·s, from the accurate m and s: no term as large as the axial
+           coordinate enters, so long tubes keep accurate normals. The outward normal is
+           y × a normalised, and its sign against d is that of y·s. */
+        for (i = 0; i < 3; i++) y[i] = CYL__FMAR(c->t, f->s[i], f->m[i]);
+#ifndef CYL_NO_PRECISE
+        if (f->precise)
+            for (i = 0; i < 3; i++) y[i] += f->ml[i] + c->t * f->sl[i];
+#endif
+        ys = CYL__P(dot)(y, f->s);
+        v = CYL__FMAR(c->t, f->ad, f->aw) / f->na;
+        v = v > f->H ? f->H : (v < -f->H ? -f->H : v);
+        if (!(opts & CYL_NO_NORMAL)) {
+            CYL__P(cross)(y, f->a, no);
+            len2 = CYL__P(dot)(no, no);
+            if (len2 > 0) {
+                CYL__R inv = 1 / CYL__SQRTR(len2);
+                for (i = 0; i < 3; i++) no[i] *= inv;
+            } else { /* only when r underflowed in the frame: any radial direction */
+                CYL__R z[3] = {0, 0, 0};
+                z[CYL__P(abs)(f->a[0]) <= CYL__P(abs)(f->a[1]) ? 0 : 1] = 1;
+                CYL__P(cross)(z, f->a, no);
+                len2 = CYL__P(dot)(no, no);
+                for (i = 0; i < 3; i++) no[i] /= CYL__SQRTR(len2);
+            }
+            face = ys > 0 ? -1 : 1;
+        }
+    } else {
+        CYL__R sgn = c->part == CYL_CAP_HIGH ? 1 : -1;
+        v = sgn * f->H;
+        if (!(opts & CYL_NO_NORMAL)) {
+            for (i = 0; i < 3; i++) no[i] = sgn * f->a[i] / f->na;
+            face = sgn * f->ad > 0 ? -1 : 1;
+        }
+    }
+    if (opts & CYL_OUTWARD) face = 1;
+    for (i = 0; i < 3; i++) hit->n[i] = face * no[i];
+    hit->v = CYL__P(scale)(v, f->el);
+    CYL__P(pow2pair)(f->e, fs);
+    if (opts & CYL_NO_ERRBOUND) {
+        hit->t_err = CYL__MAXR * 2;
+    } else {
+        CYL__R te = CYL__P(bound)(f, c, y, ys) * fs[0] * fs[1];
+        /* a user t that landed among the subnormals rounded once more */
+        if (CYL__P(abs)(hit->t) < CYL__MINR) te += CYL__MINR * CYL__U;
+        hit->t_err = te;
+    }
+}
+
+/* ------------------------------------------------------------------ public functions */
+
+CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                              unsigned opts, CYL__N(hit) *hit)
+{
+    CYL__P(frame) f;
+    CYL__P(cand) c[2];
+    int rc = hit ? CYL__P(check)(ray, cyl, opts) : CYL_E_NULL;
+    if (rc) return rc;
+    if (!CYL__P(solve)(ray, cyl, opts, &f, c)) return CYL_MISS;
+    CYL__P(finish)(&f, &c[0], opts, hit);
+    return CYL_HIT;
+}
+
+CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                                  unsigned opts, CYL__N(hit) hits[2])
+{
+    CYL__P(frame) f;
+    CYL__P(cand) c[2];
+    int k, n, rc = hits ? CYL__P(check)(ray, cyl, opts) : CYL_E_NULL;
+    if (rc) return rc;
+    n = CYL__P(solve)(ray, cyl, opts, &f, c);
+    for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, &hits[k]);
+    return n;
+}
+
+CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
+{
+    CYL__P(frame) f;
+    CYL__P(cand) c[2];
+    int rc = CYL__P(check)(ray, cyl, opts);
+    if (rc) return rc;
+    return CYL__P(solve)(ray, cyl, opts, &f, c) > 0;
+}
+
+/* The cylinder from p0 (its low cap center) to p1 (high cap center). c, a and h are rounded
+   once each; |p1 − p0| is computed with an exact power-of-two prescale, so it neither
+   overflows nor underflows. NULL ends give the zero axis (CYL_E_ZERO_AXIS at use). */
+CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p1[3], CYL__R r)
+{
+    CYL__N(cylinder) cy;
+    CYL__R m, x[3];
+    int i, k;
+    for (i = 0; i < 3; i++) {
+        cy.c[i] = p0 && p1 ? p0[i] * CYL__C(0.5) + p1[i] * CYL__C(0.5) : 0;
+        cy.a[i] = p0 && p1 ? p1[i] - p0[i] : 0;
+    }
+    cy.r = r;
+    m = CYL__P(amax3)(cy.a);
+    if (m > 0 && m <= CYL__MAXR) {
+        k = CYL__P(ilogb)(m);
+        for (i = 0; i < 3; i++) x[i] = CYL__P(scale)(cy.a[i], -k);
+        cy.h = CYL__P(scale)(CYL__SQRTR(CYL__P(dot)(x, x)), k);
+    } else {
+        cy.h = m; /* 0, or the non-finite value that intersect will report */
+    }
+    return cy;
+}
+
+#endif /* CYL__BODY */
