@@ -14,9 +14,9 @@ const char *bench_family_name(int family)
 
 uint64_t bench_rng_next(uint64_t *state)
 {
-    uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    uint64_t z = (*state += UINT64_C(0x9E3779B97F4A7C15));
+    z = (z ^ (z >> 30)) * UINT64_C(0xBF58476D1CE4E5B9);
+    z = (z ^ (z >> 27)) * UINT64_C(0x94D049BB133111EB);
     return z ^ (z >> 31);
 }
 
@@ -76,7 +76,7 @@ static void base_cyl(uint64_t *s, bench_case *k, double ah[3], int allow_inf)
         k->a[i] = ah[i] * al;
     }
     k->r = U(s, 0.5, 2.0);
-    k->h = allow_inf && IRAND(s, 10) == 0 ? INFINITY : k->r * U(s, 0.5, 8.0);
+    k->h = allow_inf && IRAND(s, 10) == 0 ? (double)INFINITY : k->r * U(s, 0.5, 8.0);
 }
 
 /* a point near the cylinder: hits and misses in similar numbers */
@@ -101,7 +101,7 @@ static void aim_from(uint64_t *s, bench_case *k, const double target[3], double 
         k->d[i] = u[i] * dl;
     }
     k->tmin = 0;
-    k->tmax = INFINITY;
+    k->tmax = (double)INFINITY;
 }
 
 static void gen_well(uint64_t *s, bench_case *k, int allow_inf)
@@ -140,8 +140,8 @@ static float to_f(double x)
 
 void bench_case_gen(int family, int prec, uint64_t seed, uint64_t index, bench_case *k)
 {
-    uint64_t st = seed ^ (0xA24BAED4963EE407ull * (uint64_t)(family + 1)) ^
-                  (0x9FB21C651E98DF25ull * (index + 1));
+    uint64_t st = seed ^ (UINT64_C(0xA24BAED4963EE407) * (uint64_t)(family + 1)) ^
+                  (UINT64_C(0x9FB21C651E98DF25) * (index + 1));
     uint64_t *s = &st;
     double ah[3], x[3], e[3];
     int i;
@@ -161,7 +161,7 @@ void bench_case_gen(int family, int prec, uint64_t seed, uint64_t index, bench_c
     case BF_PARALLEL: {
         double th = LOG10U(s, -12, -1), H, v0, rho0, dl = U(s, 0.3, 3.0), sg;
         base_cyl(s, k, ah, 0);
-        if (IRAND(s, 5) == 0) k->h = INFINITY;
+        if (IRAND(s, 5) == 0) k->h = (double)INFINITY;
         H = isfinite(k->h) ? k->h / 2 : 5 * k->r;
         if (IRAND(s, 2)) for (i = 0; i < 3; ++i) ah[i] = -ah[i];   /* either way along the axis */
         perp_vec(s, ah, e);
@@ -178,7 +178,7 @@ void bench_case_gen(int family, int prec, uint64_t seed, uint64_t index, bench_c
             k->d[i] = (cos(th) * ah[i] + sg * sin(th) * e[i]) * dl;
         }
         k->tmin = 0;
-        k->tmax = INFINITY;
+        k->tmax = (double)INFINITY;
         break;
     }
     case BF_GRAZING: {
@@ -202,7 +202,7 @@ void bench_case_gen(int family, int prec, uint64_t seed, uint64_t index, bench_c
             k->d[i] = dn[i] * dl;
         }
         k->tmin = 0;
-        k->tmax = INFINITY;
+        k->tmax = (double)INFINITY;
         break;
     }
     case BF_THIN: {
@@ -235,7 +235,7 @@ void bench_case_gen(int family, int prec, uint64_t seed, uint64_t index, bench_c
             k->d[i] = u[i] * dl;
         }
         k->tmin = 0;
-        k->tmax = INFINITY;
+        k->tmax = (double)INFINITY;
         break;
     }
     case BF_HUGE:
@@ -255,7 +255,7 @@ void bench_case_gen(int family, int prec, uint64_t seed, uint64_t index, bench_c
     }
     case BF_AXIS: {
         static const double lens[4] = {1.0, 2.0, 0.5, 3.0};
-        static const double hs[5] = {2.0, 4.0, 1.0, 6.0, INFINITY};
+        static const double hs[5] = {2.0, 4.0, 1.0, 6.0, (double)INFINITY};
         int ax = IRAND(s, 3);
         for (i = 0; i < 3; ++i) {
             k->a[i] = 0;
@@ -285,7 +285,7 @@ void bench_case_gen(int family, int prec, uint64_t seed, uint64_t index, bench_c
             } while (!(dot3(k->d, k->d) > 0));
         }
         k->tmin = IRAND(s, 4) == 0 ? 1.0 : 0.0;
-        k->tmax = INFINITY;
+        k->tmax = (double)INFINITY;
         break;
     }
     case BF_TRANGE: {
