@@ -1,0 +1,314 @@
+/* eval.c: see eval.h. */
+#define _POSIX_C_SOURCE 199309L
+#include "eval.h"
+#include "alt_formulations.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+volatile double ev_sink;
+
+static double ev_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* One call and one timing loop per (variant, caps), each with constant options so that the
+ * inlined library folds the unused paths exactly as in a user's code. */
+#define EV_DEF1(P, TAG, FN, OPTS, CAPS)                                                        \
+    static int ev_call_##P##_##TAG##_##CAPS(const void *r, const void *c, void *h)           \
+    {                                                                                        \
+        return FN((const cyl##P##_ray *)r, (const cyl##P##_cylinder *)c,                      \
+                  (OPTS) | ((CAPS) ? CYL_CAPS : 0u), (cyl##P##_hit *)h);                      \
+    }                                                                                        \
+    static double ev_time_##P##_##TAG##_##CAPS(const void *rs, const void *cs, int n,         \
+                                               int reps)                                     \
+    {                                                                                        \
+        const cyl##P##_ray *R = (const cyl##P##_ray *)rs;                                     \
+        const cyl##P##_cylinder *C = (const cyl##P##_cylinder *)cs;                           \
+        cyl##P##_hit h;                                                                      \
+        double acc = 0, t0, t1;                                                              \
+        int k, i;                                                                            \
+        memset(&h, 0, sizeof h);                                                             \
+        t0 = ev_now();                                                                       \
+        for (k = 0; k < reps; ++k)                                                           \
+            for (i = 0; i < n; ++i)                                                          \
+                if (FN(&R[i], &C[i], (OPTS) | ((CAPS) ? CYL_CAPS : 0u), &h) > 0)             \
+                    acc += (double)h.t;                                                      \
+        t1 = ev_now();                                                                       \
+        ev_sink += acc;                                                                      \
+        return t1 - t0;                                                                      \
+    }
+#define EV_DEF(P, TAG, FN, OPTS) EV_DEF1(P, TAG, FN, OPTS, 0) EV_DEF1(P, TAG, FN, OPTS, 1)
+
+#define EV_LIST(P)                                                                           \
+    EV_DEF(P, lib, cyl##P##_intersect, 0u)                                                   \
+    EV_DEF(P, precise, cyl##P##_intersect, CYL_PRECISE)                                      \
+    EV_DEF(P, noerr, cyl##P##_intersect, CYL_NO_ERRBOUND)                                    \
+    EV_DEF(P, lean, cyl##P##_intersect, CYL_NO_ERRBOUND | CYL_NO_NORMAL)                     \
+    EV_DEF(P, trusted, cyl##P##_intersect, CYL_TRUSTED)                                      \
+    EV_DEF(P, outward, cyl##P##_intersect, CYL_OUTWARD)                                      \
+    EV_DEF(P, notan, cyl##P##_intersect, CYL_NO_TANGENT)                                     \
+    EV_DEF(P, literal, alt##P##_literal_intersect, 0u)                                       \
+    EV_DEF(P, quilez, alt##P##_quilez_intersect, 0u)
+
+EV_LIST(f)
+EV_LIST(d)
+
+#define EV_ROW(P, PREC, NAME, KIND, OPTS, TAG)                                               \
+    {NAME, PREC, KIND, OPTS, {ev_call_##P##_##TAG##_0, ev_call_##P##_##TAG##_1},              \
+     {ev_time_##P##_##TAG##_0, ev_time_##P##_##TAG##_1}}
+#define EV_ROWS(P, PREC)                                                                     \
+    EV_ROW(P, PREC, "lib", EV_LIB, 0u, lib),                                                 \
+    EV_ROW(P, PREC, "lib+PRECISE", EV_LIB, CYL_PRECISE, precise),                            \
+    EV_ROW(P, PREC, "lib+NO_ERRBOUND", EV_LIB, CYL_NO_ERRBOUND, noerr),                      \
+    EV_ROW(P, PREC, "lib+NO_ERRBOUND+NO_NORMAL", EV_LIB, CYL_NO_ERRBOUND | CYL_NO_NORMAL,     \
+           lean),                                                                            \
+    EV_ROW(P, PREC, "lib+TRUSTED", EV_LIB, CYL_TRUSTED, trusted),                            \
+    EV_ROW(P, PREC, "lib+OUTWARD", EV_LIB, CYL_OUTWARD, outward),                            \
+    EV_ROW(P, PREC, "lib+NO_TANGENT", EV_LIB, CYL_NO_TANGENT, notan),                        \
+    EV_ROW(P, PREC, "literal", EV_LITERAL, 0u, literal),                                     \
+    EV_ROW(P, PREC, "quilez", EV_QUILEZ, 0u, quilez)
+
+const ev_variant ev_variants[] = {EV_ROWS(f, 24), EV_ROWS(d, 53)};
+const int ev_variant_count = (int)(sizeof ev_variants / sizeof ev_variants[0]);
+
+/* ------------------------------------------------------------------ case sets */
+
+static void to_lib(const bench_case *k, int prec, void *rays, void *cyls, int i)
+{
+    int j;
+    if (prec == 24) {
+        cylf_ray *r = (cylf_ray *)rays + i;
+        cylf_cylinder *c = (cylf_cylinder *)cyls + i;
+        for (j = 0; j < 3; ++j) {
+            r->o[j] = (float)k->o[j]; r->d[j] = (float)k->d[j];
+            c->c[j] = (float)k->c[j]; c->a[j] = (float)k->a[j];
+        }
+        r->tmin = (float)k->tmin; r->tmax = (float)k->tmax;
+        c->r = (float)k->r; c->h = (float)k->h;
+    } else {
+        cyld_ray *r = (cyld_ray *)rays + i;
+        cyld_cylinder *c = (cyld_cylinder *)cyls + i;
+        for (j = 0; j < 3; ++j) {
+            r->o[j] = k->o[j]; r->d[j] = k->d[j];
+            c->c[j] = k->c[j]; c->a[j] = k->a[j];
+        }
+        r->tmin = k->tmin; r->tmax = k->tmax;
+        c->r = k->r; c->h = k->h;
+    }
+}
+
+static void ref_case(const bench_case *k, int prec, unsigned opts, cyl_ref_case *in)
+{
+    int j;
+    for (j = 0; j < 3; ++j) {
+        in->o[j] = k->o[j]; in->d[j] = k->d[j]; in->c[j] = k->c[j]; in->a[j] = k->a[j];
+    }
+    in->tmin = k->tmin; in->tmax = k->tmax; in->r = k->r; in->h = k->h;
+    in->opts = opts;
+    in->prec = prec;
+}
+
+void ev_set_make(ev_set *s, int prec, int family, int caps, uint64_t seed, int n)
+{
+    size_t rs = prec == 24 ? sizeof(cylf_ray) : sizeof(cyld_ray);
+    size_t cs = prec == 24 ? sizeof(cylf_cylinder) : sizeof(cyld_cylinder);
+    int i;
+    s->prec = prec; s->family = family; s->caps = caps; s->n = n;
+    s->cases = (bench_case *)calloc((size_t)n, sizeof *s->cases);
+    s->rays = calloc((size_t)n, rs);
+    s->cyls = calloc((size_t)n, cs);
+    s->ref = (cyl_ref_result *)calloc((size_t)n, sizeof *s->ref);
+    if (!s->cases || !s->rays || !s->cyls || !s->ref) abort();
+    for (i = 0; i < n; ++i) {
+        cyl_ref_case in;
+        bench_case_gen(family, prec, seed, (uint64_t)i, &s->cases[i]);
+        to_lib(&s->cases[i], prec, s->rays, s->cyls, i);
+        ref_case(&s->cases[i], prec, caps ? CYL_CAPS : 0u, &in);
+        cyl_ref_intersect(&in, &s->ref[i]);
+    }
+}
+
+void ev_set_free(ev_set *s)
+{
+    free(s->cases); free(s->rays); free(s->cyls); free(s->ref);
+    memset(s, 0, sizeof *s);
+}
+
+int ev_variant_available(const ev_variant *v)
+{
+    if (v->prec == 24) {
+        cylf_ray r = {{0, -5, 0}, {0, 1, 0}, 0.0f, 100.0f};
+        cylf_cylinder c = {{0, 0, 0}, {0, 0, 1}, 1.0f, 2.0f};
+        cylf_hit h;
+        return v->call[0](&r, &c, &h) >= 0;
+    } else {
+        cyld_ray r = {{0, -5, 0}, {0, 1, 0}, 0.0, 100.0};
+        cyld_cylinder c = {{0, 0, 0}, {0, 0, 1}, 1.0, 2.0};
+        cyld_hit h;
+        return v->call[0](&r, &c, &h) >= 0;
+    }
+}
+
+/* ------------------------------------------------------------------ metrics */
+
+double ev_band(int prec) { return ldexp(1.0, -(prec - 8)); }
+
+static double dlen(const bench_case *k)
+{
+    return sqrt(k->d[0] * k->d[0] + k->d[1] * k->d[1] + k->d[2] * k->d[2]);
+}
+
+double ev_kappa(const ev_set *s, int i)
+{
+    const cyl_ref_result *ref = &s->ref[i];
+    const bench_case *k = &s->cases[i];
+    double rd = k->r / dlen(k), T, scale, sn, e;
+    if (ref->status != CYL_HIT) return 1.0;
+    if (ref->hit[0].part != CYL_SIDE) return 1.0;
+    T = fabs(ref->hit[0].t[0]);
+    scale = T > rd ? T : rd;
+    sn = sqrt(ref->sin2);
+    e = fabs(ref->e);
+    if (!(sn > 0) || !(e > 0)) return INFINITY;
+    return rd / (sn * sqrt(e)) / scale;
+}
+
+int ev_well_conditioned(const ev_set *s, int i)
+{
+    return ev_kappa(s, i) <= EV_KAPPA_MAX && s->ref[i].margin > ev_band(s->prec);
+}
+
+static int cmp_dbl(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y ? 1 : 0;
+}
+
+typedef struct ev_out {
+    int rc;
+    double t, t_err, n[3];
+    int part;
+} ev_out;
+
+static void run_one(const ev_variant *v, const ev_set *s, int i, ev_out *o)
+{
+    if (s->prec == 24) {
+        cylf_hit h;
+        memset(&h, 0, sizeof h);
+        o->rc = v->call[s->caps ? 1 : 0]((const cylf_ray *)s->rays + i,
+                                         (const cylf_cylinder *)s->cyls + i, &h);
+        o->t = (double)h.t; o->t_err = (double)h.t_err; o->part = h.part;
+        o->n[0] = (double)h.n[0]; o->n[1] = (double)h.n[1]; o->n[2] = (double)h.n[2];
+    } else {
+        cyld_hit h;
+        memset(&h, 0, sizeof h);
+        o->rc = v->call[s->caps ? 1 : 0]((const cyld_ray *)s->rays + i,
+                                         (const cyld_cylinder *)s->cyls + i, &h);
+        o->t = h.t; o->t_err = h.t_err; o->part = h.part;
+        o->n[0] = h.n[0]; o->n[1] = h.n[1]; o->n[2] = h.n[2];
+    }
+}
+
+/* A hit farther than this from the reference t (relative to max(|t|, r/|d|)) is a different
+   crossing, not an inaccurate one: even tangent contacts are within about sqrt(u) < 2^-8. */
+#define EV_WRONG_CROSSING_REL 0x1p-8
+
+void ev_eval(const ev_variant *v, const ev_set *s, ev_stats *st)
+{
+    const double band = ev_band(s->prec);
+    const double tol_t = s->prec == 24 ? (double)CYL_TANGENT_TOLF : (double)CYL_TANGENT_TOL;
+    double *ulps = (double *)malloc(sizeof(double) * (size_t)(s->n > 0 ? s->n : 1));
+    int i, nu = 0;
+    memset(st, 0, sizeof *st);
+    st->miscls_worst_index = st->cond_worst_index = st->terr_fail_index = -1;
+    if (!ulps) abort();
+
+    for (i = 0; i < s->n; ++i) {
+        const bench_case *k = &s->cases[i];
+        const cyl_ref_result *ref = &s->ref[i];
+        cyl_ref_result ref_nt;
+        ev_out o;
+        int lib_hit, ref_hit, wrong = 0;
+
+        if (v->kind == EV_QUILEZ && (!s->caps || !isfinite(k->h))) continue; /* cannot express */
+        if ((v->opts & CYL_NO_TANGENT) && fabs(ref->e) <= 4 * tol_t) {
+            cyl_ref_case in;
+            ref_case(k, s->prec, (s->caps ? CYL_CAPS : 0u) | CYL_NO_TANGENT, &in);
+            cyl_ref_intersect(&in, &ref_nt);
+            ref = &ref_nt;
+        }
+        st->n++;
+        run_one(v, s, i, &o);
+        if (o.rc < 0) st->n_error++;
+        lib_hit = o.rc == CYL_HIT;
+        ref_hit = ref->status == CYL_HIT;
+        st->ref_hits += ref_hit;
+        st->lib_hits += lib_hit;
+
+        if (lib_hit != ref_hit) wrong = 1;
+        else if (lib_hit) {
+            double rd = k->r / dlen(k), T = ref->hit[0].t[0];
+            double scale = fabs(T) > rd ? fabs(T) : rd;
+            double err = fabs(o.t - T);
+            if (o.part != ref->hit[0].part) wrong = 1;
+            else if (ref->count == 2 && fabs(o.t - ref->hit[1].t[0]) < err) wrong = 1;
+            else if (!(err / scale <= EV_WRONG_CROSSING_REL)) wrong = 1;
+        }
+        if (wrong) {
+            st->miscls++;
+            if (ref->margin > band) st->miscls_out++;
+            if (st->miscls_worst_index < 0 || ref->margin > st->miscls_worst_margin) {
+                st->miscls_worst_margin = ref->margin;
+                st->miscls_worst_index = i;
+            }
+            continue;
+        }
+        if (!lib_hit) continue;
+
+        /* same crossing: accuracy of t, n and t_err */
+        {
+            const cyl_ref_hit *rh = &ref->hit[0];
+            double rd = k->r / dlen(k), T = rh->t[0];
+            double scale = fabs(T) > rd ? fabs(T) : rd;
+            double u = fabs(cyl_ref_ulps(rh, o.t, s->prec));
+            double rel = fabs(((o.t - rh->t[0]) - rh->t[1])) / scale;
+            st->compared++;
+            ulps[nu++] = u;
+            if (rel > st->rel_max) st->rel_max = rel;
+            if (ref == &s->ref[i] && ev_well_conditioned(s, i)) {
+                st->cond_n++;
+                if (u > st->cond_ulp_max || st->cond_worst_index < 0) {
+                    if (u > st->cond_ulp_max) st->cond_ulp_max = u;
+                    if (u >= st->cond_ulp_max) st->cond_worst_index = i;
+                }
+            }
+            if (!(v->opts & CYL_NO_NORMAL)) {
+                double sg = ((v->opts & CYL_OUTWARD) && (rh->flags & CYL_F_INSIDE)) ? -1.0 : 1.0;
+                double dx = o.n[0] - sg * rh->n[0], dy = o.n[1] - sg * rh->n[1],
+                       dz = o.n[2] - sg * rh->n[2];
+                double ne = sqrt(dx * dx + dy * dy + dz * dz);
+                if (!(ne <= st->nrm_max)) st->nrm_max = ne;
+            }
+            if (v->kind == EV_LIB && !(v->opts & CYL_NO_ERRBOUND)) {
+                st->terr_checked++;
+                if (!cyl_ref_t_within(rh, o.t, o.t_err)) {
+                    if (st->terr_fail == 0) st->terr_fail_index = i;
+                    st->terr_fail++;
+                }
+            }
+        }
+    }
+    if (nu > 0) {
+        qsort(ulps, (size_t)nu, sizeof *ulps, cmp_dbl);
+        st->ulp_median = ulps[nu / 2];
+        st->ulp_p99 = ulps[(int)((double)(nu - 1) * 0.99)];
+        st->ulp_max = ulps[nu - 1];
+    }
+    free(ulps);
+}
