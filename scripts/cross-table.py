@@ -42,11 +42,13 @@ def main():
     with open(sizes_csv) as f:
         for r in csv.DictReader(f):
             size[(r["target"], r["config"], r["precision"])] = (int(r["bytes"]), r["stack"])
-    timing = {}
+    timing, timing_meta = {}, {}
     if os.path.exists(timing_csv):
         with open(timing_csv) as f:
             for r in csv.DictReader(f):
                 timing[(r["config"], r["precision"])] = (float(r["ns_median"]), float(r["ratio"]))
+                if r["config"] == "open" and r["precision"] == "f":
+                    timing_meta["hits"] = r["results"]
 
     def entry_call(c):
         fn = {"intersect": "intersect", "all": "intersect_all", "occluded": "occluded",
@@ -70,12 +72,18 @@ def main():
         return "—" if v is None else f"{v[0]:.1f} ({v[1]:.2f}×)"
 
     out = [BEGIN, ""]
+    hits = timing_meta.get("hits", "?")
     out.append("Code bytes = text + read-only data of one configuration's object "
-               "(`embedded/configs.c`, one wrapper per translation unit, the library inlined "
-               "into it). Stack = `-fstack-usage` of that wrapper (\"<=\": sum over several "
-               "functions). ns/call: `embedded/timing.c` on this machine, x86-64 objects above, "
-               "2048 rays (about half hit) per pass, median of interleaved passes; in "
-               "parentheses the ratio to `open` of the same precision.")
+               "(`embedded/configs.c`: one wrapper per translation unit, calling the API with "
+               "constant options; everything it pulls from the header is counted, nothing "
+               "shared). Stack = bytes on the deepest path of the wrapper's call tree, each "
+               "frame as `-fstack-usage` measures it (`-fcallgraph-info=su`); `+ext`: the path "
+               "also calls code outside the object (libgcc soft-float helpers on M0, `sqrtf`'s "
+               "errno fallback where `-fno-math-errno` is not given, `memcpy` on RV32), not "
+               "counted; `+dyn`: a frame is dynamically sized (stack realignment). "
+               "ns/call: `embedded/timing.c` on this machine, the x86-64 objects of this "
+               f"table, 2048 rays per pass ({hits} of them hit the open tube), median of "
+               "interleaved passes; in parentheses the ratio to `open` of the same precision.")
     out.append("")
     out.append("| configuration | entry, options, macros | x86-64 float B | x86-64 double B "
                "| M4F -Os B | M4F stack B | ns/call float | ns/call double |")
