@@ -1,0 +1,138 @@
+# Fuzzing (issue 4): libFuzzer harnesses, the corpus replay inside `make test`, coverage.
+#   make fuzz             run each harness for FUZZ_SECONDS (default 60); fails on any finding
+#   make fuzz-seeds       regenerate the seed inputs into build/fuzz/seeds
+#   make fuzz-merge       minimise seeds + fuzz/corpus* + what `make fuzz` found into fuzz/corpus*
+#   make fuzz-cov         line and branch coverage of cylinder_isect.h reached by the corpus
+#   make fuzz-replay      only the replay runners (also part of `make test`)
+# Recipe and figures: docs/fuzzing.md.
+FUZZ_SECONDS  ?= 60
+FUZZ_DIR      := $(BUILD)/fuzz
+FUZZ_HARNESSES := fuzz_isect fuzz_grid
+FUZZ_CORPUS_fuzz_isect := fuzz/corpus
+FUZZ_CORPUS_fuzz_grid  := fuzz/corpus_grid
+FUZZ_HDRS     := cylinder_isect.h fuzz/fuzz_check.h fuzz/fuzz_grid.h fuzz/fuzz_ref.h
+# The harness runs where it is built: a real FMA makes the library's error-free steps fast.
+# The gcc replay is built without it, so libm's fma path is checked too.
+FUZZ_ARCH     ?= -march=native
+FUZZ_SAN      := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+FUZZ_CFLAGS   := $(WARN_C) -g -O1 $(FUZZ_ARCH) -fsanitize=fuzzer $(FUZZ_SAN) -I. -Ifuzz $(FUZZ_EXTRA)
+LLVM_PROFDATA ?= $(firstword $(shell command -v llvm-profdata llvm-profdata-14 2>/dev/null) llvm-profdata)
+LLVM_COV      ?= $(firstword $(shell command -v llvm-cov llvm-cov-14 2>/dev/null) llvm-cov)
+
+# The exact reference (ref/, MPFR) plugs in when it is there.
+ifneq ($(wildcard ref/cyl_ref.c),)
+FUZZ_REF_DEF  := -DFUZZ_HAVE_REF -Iref
+FUZZ_REF_LIBS := -lmpfr -lgmp
+FUZZ_REF_OBJ_CLANG := $(FUZZ_DIR)/cyl_ref-san.o
+FUZZ_REF_OBJ_GCC   := $(FUZZ_DIR)/cyl_ref-gcc.o
+FUZZ_REF_OBJ_NOPR  := $(FUZZ_DIR)/cyl_ref-noprecise.o
+FUZZ_REF_OBJ_COV   := $(FUZZ_DIR)/cyl_ref-cov.o
+endif
+
+# The reference is another area's code: built once per flavour, not instrumented for coverage.
+$(FUZZ_DIR)/cyl_ref-san.o: ref/cyl_ref.c ref/cyl_ref.h cylinder_isect.h
+	@mkdir -p $(@D)
+	$(CLANG) -std=c99 -g -O1 $(FUZZ_SAN) -I. -Iref -c $< -o $@
+$(FUZZ_DIR)/cyl_ref-gcc.o: ref/cyl_ref.c ref/cyl_ref.h cylinder_isect.h
+	@mkdir -p $(@D)
+	$(GCC) -std=c99 -O2 -I. -Iref -c $< -o $@
+$(FUZZ_DIR)/cyl_ref-noprecise.o: ref/cyl_ref.c ref/cyl_ref.h cylinder_isect.h
+	@mkdir -p $(@D)
+	$(GCC) -std=c99 -O2 -DCYL_NO_PRECISE -I. -Iref -c $< -o $@
+$(FUZZ_DIR)/cyl_ref-cov.o: ref/cyl_ref.c ref/cyl_ref.h cylinder_isect.h
+	@mkdir -p $(@D)
+	$(CLANG) -std=c99 -O1 -I. -Iref -c $< -o $@
+
+# ---------------------------------------------------------------- libFuzzer harnesses
+$(FUZZ_DIR)/fuzz_isect: fuzz/fuzz_isect.c $(FUZZ_HDRS) $(FUZZ_REF_OBJ_CLANG)
+	@mkdir -p $(@D)
+	$(CLANG) $(FUZZ_CFLAGS) $(FUZZ_REF_DEF) $< -x none $(FUZZ_REF_OBJ_CLANG) $(FUZZ_REF_LIBS) -lm -o $@
+$(FUZZ_DIR)/fuzz_grid: fuzz/fuzz_grid.c $(FUZZ_HDRS) $(FUZZ_REF_OBJ_CLANG)
+	@mkdir -p $(@D)
+	$(CLANG) $(FUZZ_CFLAGS) $(FUZZ_REF_DEF) $< -x none $(FUZZ_REF_OBJ_CLANG) $(FUZZ_REF_LIBS) -lm -o $@
+
+.PHONY: fuzz fuzz-build fuzz-seeds fuzz-merge fuzz-cov fuzz-replay
+fuzz-build: $(addprefix $(FUZZ_DIR)/,$(FUZZ_HARNESSES))
+
+# Each harness runs on a scratch copy of its corpus (new inputs land in build/, not in git);
+# a violation aborts, libFuzzer writes the input to build/fuzz/artifacts/ and make fails.
+fuzz: fuzz-build
+	@mkdir -p $(FUZZ_DIR)/artifacts
+	@set -e; for h in $(FUZZ_HARNESSES); do \
+	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect);; fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid);; esac; \
+	  mkdir -p $(FUZZ_DIR)/work/$$h; \
+	  echo "== $$h: $(FUZZ_SECONDS) s on $$c"; \
+	  $(FUZZ_DIR)/$$h -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -max_len=512 \
+	    -artifact_prefix=$(FUZZ_DIR)/artifacts/$$h- $(FUZZ_DIR)/work/$$h $$c \
+	    >$(FUZZ_DIR)/$$h.log 2>&1 || { tail -n 40 $(FUZZ_DIR)/$$h.log; echo "FINDING in $$h: see $(FUZZ_DIR)/artifacts/"; exit 1; }; \
+	  grep -E '^#[0-9]+.*DONE|stat::number_of_executed_units|stat::average_exec_per_sec' $(FUZZ_DIR)/$$h.log; \
+	done
+
+$(FUZZ_DIR)/gen_seeds: fuzz/gen_seeds.c fuzz/fuzz_check.h cylinder_isect.h
+	@mkdir -p $(@D)
+	$(GCC) $(WARN_C) -O1 -I. -Ifuzz $< -lm -o $@
+fuzz-seeds: $(FUZZ_DIR)/gen_seeds
+	rm -rf $(FUZZ_DIR)/seeds $(FUZZ_DIR)/seeds_grid && mkdir -p $(FUZZ_DIR)/seeds $(FUZZ_DIR)/seeds_grid
+	$(FUZZ_DIR)/gen_seeds $(FUZZ_DIR)/seeds $(FUZZ_DIR)/seeds_grid
+
+# Keep only inputs that add coverage (libFuzzer -merge=1), then replace the committed corpora.
+fuzz-merge: fuzz-build fuzz-seeds
+	@set -e; for h in $(FUZZ_HARNESSES); do \
+	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect); extra=$(FUZZ_DIR)/seeds;; \
+	              fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid); extra=$(FUZZ_DIR)/seeds_grid;; esac; \
+	  rm -rf $(FUZZ_DIR)/merged/$$h && mkdir -p $(FUZZ_DIR)/merged/$$h $(FUZZ_DIR)/work/$$h $$c; \
+	  $(FUZZ_DIR)/$$h -merge=1 $(FUZZ_DIR)/merged/$$h $$c $$extra $(FUZZ_DIR)/work/$$h >$(FUZZ_DIR)/$$h-merge.log 2>&1 \
+	    || { tail -n 20 $(FUZZ_DIR)/$$h-merge.log; exit 1; }; \
+	  rm -f $$c/* && cp $(FUZZ_DIR)/merged/$$h/* $$c/; \
+	  echo "$$c: $$(ls $$c | wc -l) inputs"; \
+	done
+
+# ---------------------------------------------------------------- replay inside `make test`
+FUZZ_REPLAY_DEFS := -DFUZZ_CORPUS_DIR='"$(CURDIR)/fuzz/corpus"' -DFUZZ_GRID_DIR='"$(CURDIR)/fuzz/corpus_grid"' \
+                    -DFZ_REF_ALWAYS=1 $(FUZZ_REF_DEF)
+FUZZ_FINDINGS_DEF := -DFUZZ_FINDINGS_DIR='"$(CURDIR)/fuzz/findings"'
+
+$(FUZZ_DIR)/replay-gcc: fuzz/replay.c $(FUZZ_HDRS) $(BUILD)/gcc-O2/unity.o $(FUZZ_REF_OBJ_GCC)
+	@mkdir -p $(@D)
+	$(GCC) $(WARN_C) -O2 $(UNITY_FLAGS) -I. -Ifuzz $(FUZZ_REPLAY_DEFS) $< -x none $(BUILD)/gcc-O2/unity.o \
+	  $(FUZZ_REF_OBJ_GCC) $(FUZZ_REF_LIBS) -lm -o $@
+# The same corpus with the precise tier compiled out: CYL_PRECISE must then be CYL_E_OPTION.
+$(FUZZ_DIR)/replay-noprecise: fuzz/replay.c $(FUZZ_HDRS) $(BUILD)/gcc-O2/unity.o $(FUZZ_REF_OBJ_NOPR)
+	@mkdir -p $(@D)
+	$(GCC) $(WARN_C) -O2 -DCYL_NO_PRECISE $(UNITY_FLAGS) -I. -Ifuzz $(FUZZ_REPLAY_DEFS) $< -x none \
+	  $(BUILD)/gcc-O2/unity.o $(FUZZ_REF_OBJ_NOPR) $(FUZZ_REF_LIBS) -lm -o $@
+$(FUZZ_DIR)/replay-asan: fuzz/replay.c $(FUZZ_HDRS) $(BUILD)/asan/unity.o $(FUZZ_REF_OBJ_CLANG)
+	@mkdir -p $(@D)
+	$(CLANG) $(WARN_C) -g -O1 $(FUZZ_SAN) $(UNITY_FLAGS) -I. -Ifuzz $(FUZZ_REPLAY_DEFS) $< -x none \
+	  $(BUILD)/asan/unity.o $(FUZZ_REF_OBJ_CLANG) $(FUZZ_REF_LIBS) -lm -o $@
+# One named Unity test per finding (fuzz/findings/), see docs/fuzzing.md.
+$(FUZZ_DIR)/test_fuzz_regressions: fuzz/test_fuzz_regressions.c $(FUZZ_HDRS) $(BUILD)/gcc-O2/unity.o $(FUZZ_REF_OBJ_GCC)
+	@mkdir -p $(@D)
+	$(GCC) $(WARN_C) -O2 $(UNITY_FLAGS) -I. -Ifuzz $(FUZZ_REPLAY_DEFS) $(FUZZ_FINDINGS_DEF) $< -x none \
+	  $(BUILD)/gcc-O2/unity.o $(FUZZ_REF_OBJ_GCC) $(FUZZ_REF_LIBS) -lm -o $@
+
+FUZZ_RUNNERS := $(FUZZ_DIR)/replay-gcc $(FUZZ_DIR)/replay-noprecise $(FUZZ_DIR)/replay-asan \
+                $(FUZZ_DIR)/test_fuzz_regressions
+RUNNERS += $(FUZZ_RUNNERS)
+
+fuzz-replay: unity $(FUZZ_RUNNERS)
+	@bash scripts/run-tests.sh $(RESULTS)/fuzz $(FUZZ_RUNNERS)
+
+# ---------------------------------------------------------------- coverage
+# The replay driver built with clang's source-based coverage, run over both corpora; the report
+# covers cylinder_isect.h only.
+$(FUZZ_DIR)/replay-cov: fuzz/replay.c $(FUZZ_HDRS) $(UNITY_C) $(FUZZ_REF_OBJ_COV)
+	@mkdir -p $(@D)
+	$(CLANG) $(WARN_C) -O0 -fprofile-instr-generate -fcoverage-mapping $(UNITY_FLAGS) -I. -Ifuzz \
+	  $(FUZZ_REPLAY_DEFS) $< -x none $(FUZZ_DIR)/unity-cov.o $(FUZZ_REF_OBJ_COV) $(FUZZ_REF_LIBS) -lm -o $@
+$(FUZZ_DIR)/replay-cov: $(FUZZ_DIR)/unity-cov.o
+$(FUZZ_DIR)/unity-cov.o: $(UNITY_C) | unity
+	@mkdir -p $(@D)
+	$(CLANG) -O0 $(UNITY_FLAGS) -w -c $< -o $@
+
+fuzz-cov: unity $(FUZZ_DIR)/replay-cov
+	@rm -f $(FUZZ_DIR)/cov.profraw
+	LLVM_PROFILE_FILE=$(FUZZ_DIR)/cov.profraw $(FUZZ_DIR)/replay-cov >$(FUZZ_DIR)/cov-replay.txt 2>&1 || \
+	  { tail -n 20 $(FUZZ_DIR)/cov-replay.txt; exit 1; }
+	$(LLVM_PROFDATA) merge -sparse $(FUZZ_DIR)/cov.profraw -o $(FUZZ_DIR)/cov.profdata
+	@bash fuzz/coverage.sh "$(LLVM_COV)" $(FUZZ_DIR)/replay-cov $(FUZZ_DIR)/cov.profdata $(FUZZ_DIR)
