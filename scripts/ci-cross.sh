@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 : "${BUILD:=build}"
 : "${UNITY_SRC:=$BUILD/unity}"
 export BUILD
+[ -f "$UNITY_SRC/unity.c" ] || make -s unity BUILD="$BUILD"
 failed=()
 step() {
   local name=$1; shift

@@ -11,12 +11,14 @@ cd "$(dirname "$0")/.."
 write_doc=1; timing=1
 for a in "$@"; do case $a in --no-doc) write_doc=0;; --no-timing) timing=0;; *) echo "usage: $0 [--no-doc] [--no-timing]" >&2; exit 2;; esac; done
 
-out=$BUILD/sizes
+out=${SIZES_OUT:-$BUILD/sizes}
 rm -rf "$out"; mkdir -p "$out"
 jobs=$out/jobs.txt; : >"$jobs"
 
+# CROSS_ONLY="x86_64 m4f ...": build only these targets (make embedded-check needs no AArch64).
 for tgt in "${CROSS_TARGETS[@]}"; do
   t=$(cross_field "$tgt" 0); cc=$(cross_field "$tgt" 1); tflags=$(cross_field "$tgt" 2); tprec=$(cross_field "$tgt" 3)
+  if [ -n "${CROSS_ONLY:-}" ]; then case " $CROSS_ONLY " in *" $t "*) ;; *) continue;; esac; fi
   command -v "$cc" >/dev/null || { echo "error: $cc not found (see mk/cross.deps)" >&2; exit 1; }
   mkdir -p "$out/$t"
   while read -r name prec entry opts macros; do
@@ -43,6 +45,7 @@ csv=$out/sizes.csv
 echo "target,config,precision,bytes,stack,functions" >"$csv"
 for tgt in "${CROSS_TARGETS[@]}"; do
   t=$(cross_field "$tgt" 0)
+  [ -d "$out/$t" ] || continue
   for o in "$out/$t"/*.o; do
     b=$(basename "$o" .o); p=${b%%_*}; name=${b#*_}
     # Stack: deepest path of the wrapper's call tree, frames as -fstack-usage measures them.
