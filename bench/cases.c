@@ -133,9 +133,13 @@ static int rough_hit(const bench_case *k, double *t_out)
     return 0;
 }
 
-static float to_f(double x)
+/* x rounded to float, as a double. Through a volatile: GCC 12.2 at -O2 (SLP vectorizer)
+   drops the rounding of (double)(float)x on neighbouring struct members (reproduced on
+   Debian bookworm's gcc 12.2.0-14), which left float cases holding non-float values. */
+static double to_f(double x)
 {
-    return (float)x;
+    volatile float f = (float)x;
+    return (double)f;
 }
 
 void bench_case_gen(int family, int prec, uint64_t seed, uint64_t index, bench_case *k)
@@ -306,14 +310,14 @@ void bench_case_gen(int family, int prec, uint64_t seed, uint64_t index, bench_c
 
     if (prec == 24) {
         for (i = 0; i < 3; ++i) {
-            k->o[i] = (double)to_f(k->o[i]);
-            k->d[i] = (double)to_f(k->d[i]);
-            k->c[i] = (double)to_f(k->c[i]);
-            k->a[i] = (double)to_f(k->a[i]);
+            k->o[i] = to_f(k->o[i]);
+            k->d[i] = to_f(k->d[i]);
+            k->c[i] = to_f(k->c[i]);
+            k->a[i] = to_f(k->a[i]);
         }
-        k->r = (double)to_f(k->r);
-        k->h = (double)to_f(k->h);
-        k->tmin = (double)to_f(k->tmin);
-        k->tmax = (double)to_f(k->tmax);
+        k->r = to_f(k->r);
+        k->h = to_f(k->h);
+        k->tmin = to_f(k->tmin);
+        k->tmax = to_f(k->tmax);
     }
 }

@@ -168,15 +168,23 @@ double ev_kappa(const ev_set *s, int i)
 {
     const cyl_ref_result *ref = &s->ref[i];
     const bench_case *k = &s->cases[i];
-    double rd = k->r / dlen(k), T, scale, sn, e;
+    double rd = k->r / dlen(k), T, scale, sn, e, kap = 1.0;
     if (ref->status != CYL_HIT) return 1.0;
-    if (ref->hit[0].part != CYL_SIDE) return 1.0;
     T = fabs(ref->hit[0].t[0]);
+    if (!(T > 0)) return INFINITY;
     scale = T > rd ? T : rd;
-    sn = sqrt(ref->sin2);
-    e = fabs(ref->e);
-    if (!(sn > 0) || !(e > 0)) return INFINITY;
-    return rd / (sn * sqrt(e)) / scale;
+    if (ref->hit[0].part == CYL_SIDE) {
+        /* half chord r·sqrt(e)/(|d| sin): a relative change u of the data moves it by about
+           u·r/(|d| sin sqrt(e)) */
+        sn = sqrt(ref->sin2);
+        e = fabs(ref->e);
+        if (!(sn > 0) || !(e > 0)) return INFINITY;
+        kap = rd / (sn * sqrt(e)) / scale;
+        if (kap < 1.0) kap = 1.0;
+    }
+    /* errors of the order u·max(|t|, r/|d|) are inherent to rounding the data's geometry
+       (o - c, r); counted in ulps of t they grow by scale/|t| when the origin is close */
+    return kap * scale / T;
 }
 
 int ev_well_conditioned(const ev_set *s, int i)

@@ -64,12 +64,12 @@ void ev_eval(const ev_variant *v, const ev_set *s, ev_stats *st);
 /* Band of margins inside which either answer is accepted: 2^-(p-8). */
 double ev_band(int prec);
 
-/* Condition number of the reference hit's t relative to max(|t|, r/|d|): grazing and
-   near-parallel wall hits are ill-conditioned; cap hits are not. */
+/* Condition number of the reference hit's t, relative to |t|: grazing wall hits, and hits
+   much closer to the origin than the radius crossing time r/|d|, are ill-conditioned. */
 double ev_kappa(const ev_set *s, int i);
 
 /* Is the case well-conditioned for t (kappa <= EV_KAPPA_MAX and margin above the band)? */
-#define EV_KAPPA_MAX 8.0   /* t condition number under which ulps targets apply */
+#define EV_KAPPA_MAX 1.0 /* ulps targets apply where a relative data change u moves t by <= 1 ulp */
 int ev_well_conditioned(const ev_set *s, int i);
 
 #endif

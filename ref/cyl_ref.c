@@ -302,7 +302,7 @@ int cyl_ref_intersect(const cyl_ref_case *in, cyl_ref_result *res)
 
     /* the slab between the cap planes: s1 ≤ s2; ad = 0 → all t or none */
     {
-        int slab_all = 0, slab_none = 0;
+        int slab_all = 0, slab_none = 0, cap_in[2] = {0, 0};
         if (capped && finite_h) {
             if (mpfr_zero_p(ad)) {
                 mpfr_mul(x, H, sa, RN);
@@ -327,6 +327,7 @@ int cyl_ref_intersect(const cyl_ref_case *in, cyl_ref_result *res)
                     }
                     mpfr_div(z, z, aa, RN);
                     mpfr_sqrt(z, z, RN);
+                    cap_in[k] = mpfr_cmp(z, r) <= 0;
                     mpfr_sub(z, z, r, RN);
                     mpfr_div(z, z, r, RN);
                     if (fabs(hd(z)) < res->m_rim) res->m_rim = fabs(hd(z));
@@ -356,13 +357,25 @@ int cyl_ref_intersect(const cyl_ref_case *in, cyl_ref_result *res)
             }
         } else if (!slab_none) {
             /* solid: wall interval ∩ slab */
-            int lo_inf = 0, hi_inf = 0, lo_part = CYL_SIDE, hi_part = CYL_SIDE, wall_all = 0;
+            int lo_inf = 0, hi_inf = 0, lo_part = CYL_SIDE, hi_part = CYL_SIDE;
             if (parallel) {
-                if (mpfr_sgn(enum_) >= 0) wall_all = 1;   /* ρ ≤ r: the line runs inside */
-                else goto done_solid;
+                /* no wall: each cap plane crossing is a hit where the ray point lies inside
+                   its disk (the library's contract for CYL_F_PARALLEL) */
+                mpfr_ptr sv[2];
+                int pv[2], in2[2];
+                if (!finite_h || slab_all) goto done_solid;
+                sv[0] = s1; sv[1] = s2; pv[0] = CYL_CAP_LOW; pv[1] = CYL_CAP_HIGH;
+                in2[0] = cap_in[0]; in2[1] = cap_in[1];
+                if (mpfr_cmp(s1, s2) > 0) {
+                    sv[0] = s2; sv[1] = s1; pv[0] = CYL_CAP_HIGH; pv[1] = CYL_CAP_LOW;
+                    in2[0] = cap_in[1]; in2[1] = cap_in[0];
+                }
+                for (k = 0; k < 2; ++k)
+                    if (in2[k]) { hits[nh].part = pv[k]; split3(hits[nh].t, sv[k]); nh++; }
+                goto done_solid;
             } else if (!wall_ok) goto done_solid;
-            if (wall_all) { lo_inf = hi_inf = 1; }
-            else { mpfr_set(lo, t1, RN); mpfr_set(hi, t2, RN); }
+            mpfr_set(lo, t1, RN);
+            mpfr_set(hi, t2, RN);
             if (finite_h && !slab_all) {
                 int s1_part = mpfr_sgn(ad) > 0 ? CYL_CAP_LOW : CYL_CAP_HIGH;
                 int s2_part = mpfr_sgn(ad) > 0 ? CYL_CAP_HIGH : CYL_CAP_LOW;

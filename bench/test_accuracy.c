@@ -1,0 +1,238 @@
+/* test_accuracy.c: the accuracy targets of issue 3, asserted on a fixed-seed sample of every
+ * case family (bench/cases.c) against the exact MPFR reference (ref/cyl_ref.c).
+ * Timing is not asserted here (shared, noisy machine): see `make report` for ns per call.
+ *
+ * Targets (p = 24 float, 53 double; band = 2^-(p-8)):
+ *   1. t_err contains the exact t for every compared hit, every family, every library variant
+ *      that computes t_err.
+ *   2. Default path: no misclassification with a margin above the band in the well, huge, tiny
+ *      and axis families; t within 4 ulps there (well-conditioned hits, see ev_kappa).
+ *   3. CYL_PRECISE: no misclassification with a margin above the band in every family; t within
+ *      2 ulps on every well-conditioned hit.
+ */
+#include "unity.h"
+#include "eval.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define SEED 20261122u         /* the report's default seed */
+#define N_PER_SET 1000         /* cases per family x caps x precision: a few s in total */
+#define DEFAULT_ULPS_MAX 4.0   /* target 2: default path, ulps of the exact t */
+#define PRECISE_ULPS_MAX 2.0   /* target 3: CYL_PRECISE, ulps of the exact t */
+
+/* Exact equality, for the places where exactness is the point (-Wfloat-equal forbids ==). */
+static int same(double a, double b) { return !(a < b) && !(a > b) && a - a < 1 && b - b < 1; }
+
+void setUp(void) {}
+void tearDown(void) {}
+
+/* One evaluated sample: stats[prec_i][family][caps][variant] for the variants of that prec. */
+static ev_stats stats[2][BF_COUNT][2][32];
+static int have_stats;
+
+static void evaluate_all(void)
+{
+    int pi, fam, caps, i;
+    if (have_stats) return;
+    for (pi = 0; pi < 2; ++pi)
+        for (fam = 0; fam < BF_COUNT; ++fam)
+            for (caps = 0; caps < 2; ++caps) {
+                ev_set s;
+                int prec = pi == 0 ? 24 : 53;
+                ev_set_make(&s, prec, fam, caps, SEED, N_PER_SET);
+                for (i = 0; i < ev_variant_count && i < 32; ++i) {
+                    const ev_variant *v = &ev_variants[i];
+                    memset(&stats[pi][fam][caps][i], 0, sizeof(ev_stats));
+                    if (v->prec != prec || v->kind != EV_LIB || !ev_variant_available(v)) continue;
+                    ev_eval(v, &s, &stats[pi][fam][caps][i]);
+                }
+                ev_set_free(&s);
+            }
+    have_stats = 1;
+}
+
+static int find_variant(int prec, const char *name)
+{
+    int i;
+    for (i = 0; i < ev_variant_count; ++i)
+        if (ev_variants[i].prec == prec && !strcmp(ev_variants[i].name, name)) return i;
+    return -1;
+}
+
+/* ---------------------------------------------------------------- reference self-checks */
+
+static void check_ref(double ox, double oy, double oz, double dx, double dy, double dz,
+                      double r, double h, unsigned opts, int status, int count, double t0,
+                      int part0, double t1)
+{
+    cyl_ref_case in;
+    cyl_ref_result res;
+    memset(&in, 0, sizeof in);
+    in.o[0] = ox; in.o[1] = oy; in.o[2] = oz;
+    in.d[0] = dx; in.d[1] = dy; in.d[2] = dz;
+    in.a[2] = 2.0;                     /* axis z, length 2: only the direction counts */
+    in.r = r; in.h = h;
+    in.tmin = 0; in.tmax = (double)INFINITY;
+    in.opts = opts; in.prec = 53;
+    TEST_ASSERT_EQUAL_INT(status, cyl_ref_intersect(&in, &res));
+    TEST_ASSERT_EQUAL_INT(count, res.count);
+    if (count > 0) {
+        /* exact answers: compared with == on purpose */
+        TEST_ASSERT_TRUE(same(res.hit[0].t[0], t0) && same(res.hit[0].t[1], 0.0));
+        TEST_ASSERT_EQUAL_INT(part0, res.hit[0].part);
+    }
+    if (count > 1) TEST_ASSERT_TRUE(same(res.hit[1].t[0], t1));
+}
+
+static void test_reference_exact_answers(void)
+{
+    cyl_ref_case in;
+    cyl_ref_result res;
+    /* through the axis: wall at x = -1 and x = +1 */
+    check_ref(-5, 0, 0, 1, 0, 0, 1, 4, 0u, CYL_HIT, 2, 4.0, CYL_SIDE, 6.0);
+    /* along the axis, capped: enters the low cap at z = -2, leaves at z = +2 */
+    check_ref(0.5, 0, -9, 0, 0, 1, 1, 4, CYL_CAPS, CYL_HIT, 2, 7.0, CYL_CAP_LOW, 11.0);
+    /* along the axis, open tube: parallel, no wall */
+    check_ref(0.5, 0, -9, 0, 0, 1, 1, 4, 0u, CYL_MISS, 0, 0, 0, 0);
+    /* above the tube, open: the wall ends at z = 2 */
+    check_ref(-5, 0, 3, 1, 0, 0, 1, 4, 0u, CYL_MISS, 0, 0, 0, 0);
+    /* origin inside, capped: leaves through the high cap at t = 2 */
+    check_ref(0, 0, 0, 0, 0, 1, 1, 4, CYL_CAPS, CYL_HIT, 1, 2.0, CYL_CAP_HIGH, 0);
+    /* exact tangency y = r: a double root, margin 0 */
+    memset(&in, 0, sizeof in);
+    in.o[0] = -5; in.o[1] = 1; in.d[0] = 2; in.a[2] = 1; in.r = 1; in.h = 4;
+    in.tmax = (double)INFINITY; in.prec = 24;
+    TEST_ASSERT_EQUAL_INT(CYL_HIT, cyl_ref_intersect(&in, &res));
+    TEST_ASSERT_TRUE(same(res.e, 0.0) && same(res.margin, 0.0));
+    TEST_ASSERT_TRUE(same(res.hit[0].t[0], 2.5));
+    TEST_ASSERT_TRUE((res.hit[0].flags & CYL_F_TANGENT) != 0);
+    /* the same with CYL_NO_TANGENT is a miss */
+    in.opts = CYL_NO_TANGENT;
+    TEST_ASSERT_EQUAL_INT(CYL_MISS, cyl_ref_intersect(&in, &res));
+    /* validation order */
+    in.r = -1; in.h = 0;
+    TEST_ASSERT_EQUAL_INT(CYL_E_RADIUS, cyl_ref_intersect(&in, &res));
+}
+
+static void test_reference_t_within_is_exact(void)
+{
+    cyl_ref_hit h;
+    memset(&h, 0, sizeof h);
+    h.t[0] = 1.0; h.t[1] = 0x1p-80;       /* exact t = 1 + 2^-80 */
+    TEST_ASSERT_TRUE(cyl_ref_t_within(&h, 1.0, 0x1p-80));
+    TEST_ASSERT_FALSE(cyl_ref_t_within(&h, 1.0, 0x1p-81));
+    TEST_ASSERT_FALSE(cyl_ref_t_within(&h, 1.0, 0.0));
+    /* 1 + 2^-51 is 2 ulps (of 1, in double) above 1, so about 2 - 2^-29 ulps above t */
+    TEST_ASSERT_TRUE(cyl_ref_ulps(&h, 1.0 + 0x1p-51, 53) > 1.99);
+    TEST_ASSERT_TRUE(cyl_ref_ulps(&h, 1.0 + 0x1p-51, 53) < 2.0);
+}
+
+static void test_families_are_reproducible(void)
+{
+    bench_case a, b, c;
+    int fam;
+    for (fam = 0; fam < BF_COUNT; ++fam) {
+        memset(&a, 0, sizeof a); memset(&b, 0, sizeof b); memset(&c, 0, sizeof c);
+        bench_case_gen(fam, 24, 7, 3, &a);
+        bench_case_gen(fam, 24, 7, 3, &b);
+        bench_case_gen(fam, 24, 8, 3, &c);
+        TEST_ASSERT_EQUAL_MEMORY(&a, &b, sizeof a);
+        TEST_ASSERT_TRUE(memcmp(&a, &c, sizeof a) != 0);
+        /* float cases hold float values exactly */
+        TEST_ASSERT_TRUE(same((double)(float)a.o[0], a.o[0]) && same((double)(float)a.r, a.r));
+    }
+}
+
+/* ---------------------------------------------------------------- targets */
+
+static char msg[4096];
+
+static void test_terr_contains_exact_t(void)
+{
+    int pi, fam, caps, i, fails = 0, checked = 0;
+    size_t len = 0;
+    evaluate_all();
+    msg[0] = 0;
+    for (pi = 0; pi < 2; ++pi)
+        for (fam = 0; fam < BF_COUNT; ++fam)
+            for (caps = 0; caps < 2; ++caps)
+                for (i = 0; i < ev_variant_count && i < 32; ++i) {
+                    const ev_stats *st = &stats[pi][fam][caps][i];
+                    checked += st->terr_checked;
+                    if (st->terr_fail == 0) continue;
+                    fails += st->terr_fail;
+                    if (len < sizeof msg - 200)
+                        len += (size_t)snprintf(msg + len, sizeof msg - len,
+                                                "[%s %s caps=%d %s: %d/%d, first case %d] ",
+                                                pi ? "double" : "float", bench_family_name(fam),
+                                                caps, ev_variants[i].name, st->terr_fail,
+                                                st->terr_checked, st->terr_fail_index);
+                }
+    TEST_ASSERT_TRUE(checked > 1000);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, fails, msg);
+}
+
+static void check_targets(int prec, const char *variant, const int *families, int nfam,
+                          double ulps_max)
+{
+    int pi = prec == 24 ? 0 : 1, vi = find_variant(prec, variant), f, caps, bad = 0, cond = 0;
+    size_t len = 0;
+    TEST_ASSERT_TRUE(vi >= 0);
+    if (!ev_variant_available(&ev_variants[vi])) TEST_IGNORE_MESSAGE("variant compiled out");
+    evaluate_all();
+    msg[0] = 0;
+    for (f = 0; f < nfam; ++f)
+        for (caps = 0; caps < 2; ++caps) {
+            const ev_stats *st = &stats[pi][families[f]][caps][vi];
+            cond += st->cond_n;
+            if (st->miscls_out == 0 && st->cond_ulp_max <= ulps_max) continue;
+            bad++;
+            if (len < sizeof msg - 200)
+                len += (size_t)snprintf(msg + len, sizeof msg - len,
+                                        "[%s caps=%d: %d misclassified beyond 2^-%d (worst "
+                                        "margin %.3g, case %d); max %.3g ulps (case %d)] ",
+                                        bench_family_name(families[f]), caps, st->miscls_out,
+                                        prec - 8, st->miscls_worst_margin,
+                                        st->miscls_worst_index, st->cond_ulp_max,
+                                        st->cond_worst_index);
+        }
+    TEST_ASSERT_TRUE(cond > 100);   /* the sample has well-conditioned hits to judge */
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, bad, msg);
+}
+
+static const int default_families[] = {BF_WELL, BF_HUGE, BF_TINY, BF_AXIS};
+static const int all_families[] = {BF_WELL, BF_FAR, BF_PARALLEL, BF_GRAZING, BF_THIN,
+                                   BF_SURFACE, BF_HUGE, BF_TINY, BF_AXIS, BF_TRANGE};
+
+static void test_default_path_float(void)
+{
+    check_targets(24, "lib", default_families, 4, DEFAULT_ULPS_MAX);
+}
+static void test_default_path_double(void)
+{
+    check_targets(53, "lib", default_families, 4, DEFAULT_ULPS_MAX);
+}
+static void test_precise_float(void)
+{
+    check_targets(24, "lib+PRECISE", all_families, BF_COUNT, PRECISE_ULPS_MAX);
+}
+static void test_precise_double(void)
+{
+    check_targets(53, "lib+PRECISE", all_families, BF_COUNT, PRECISE_ULPS_MAX);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_reference_exact_answers);
+    RUN_TEST(test_reference_t_within_is_exact);
+    RUN_TEST(test_families_are_reproducible);
+    RUN_TEST(test_terr_contains_exact_t);
+    RUN_TEST(test_default_path_float);
+    RUN_TEST(test_default_path_double);
+    RUN_TEST(test_precise_float);
+    RUN_TEST(test_precise_double);
+    return UNITY_END();
+}

@@ -1,0 +1,55 @@
+# Exact reference, stiff/extreme case families, error-vs-time report (issue 3).
+#   make test     also runs build/bench/test_accuracy (accuracy targets on a fixed-seed sample)
+#   make report   full benchmark: bench/REPORT.md and bench/error_vs_time.png
+#                 (BENCH_SEED, BENCH_N change the seed and the cases per family)
+BENCH_BUILD  := $(BUILD)/bench
+BENCH_SRCS   := bench/eval.c bench/cases.c ref/cyl_ref.c
+BENCH_HDRS   := cylinder_isect.h bench/eval.h bench/cases.h bench/alt_formulations.h ref/cyl_ref.h
+BENCH_INC    := -I. -Ibench -Iref
+BENCH_LIBS   := -lmpfr -lgmp -lm
+# Timing build: hardware sqrt and FMA, as the header recommends for speed on x86-64.
+BENCH_OPT    ?= -O2 -march=native
+BENCH_SEED   ?= 20261122
+BENCH_N      ?= 2000
+REPORT_VENV  := $(BUILD)/report-venv
+MATPLOTLIB   := matplotlib==3.9.2
+
+$(BENCH_BUILD)/unity.o: $(UNITY_C) | unity
+	@mkdir -p $(@D)
+	$(GCC) -O2 $(UNITY_FLAGS) -w -c $< -o $@
+
+# The accuracy runner: portable flags (no -march), as most users build.
+$(BENCH_BUILD)/test_accuracy: bench/test_accuracy.c $(BENCH_SRCS) $(BENCH_HDRS) $(BENCH_BUILD)/unity.o
+	@mkdir -p $(@D)
+	$(GCC) $(WARN_C) -O2 $(UNITY_FLAGS) $(BENCH_INC) $< $(BENCH_SRCS) -x none $(BENCH_BUILD)/unity.o $(BENCH_LIBS) -o $@
+
+$(BENCH_BUILD)/bench: bench/bench.c $(BENCH_SRCS) $(BENCH_HDRS)
+	@mkdir -p $(@D)
+	$(GCC) $(WARN_C) $(BENCH_OPT) -DBENCH_CFLAGS='"$(BENCH_OPT)"' $(BENCH_INC) $< $(BENCH_SRCS) $(BENCH_LIBS) -o $@
+
+# alt_formulations.h is used by other code (the viewer): strict C with clang and strict C++.
+$(BENCH_BUILD)/alt_check.stamp: bench/alt_formulations.h cylinder_isect.h
+	@mkdir -p $(@D)
+	echo '#include "bench/alt_formulations.h"' | $(CLANG) -x c $(WARN_C) -I. -fsyntax-only -
+	echo '#include "bench/alt_formulations.h"' | $(CXX_GCC) -x c++ $(WARN_CXX) -I. -fsyntax-only -
+	echo '#include "cyl_ref.h"' | $(CXX_GCC) -x c++ $(WARN_CXX) -I. -Iref -fsyntax-only -
+	$(CLANG) $(WARN_C) $(BENCH_INC) -fsyntax-only $(BENCH_SRCS) bench/bench.c
+	@touch $@
+
+RUNNERS      += $(BENCH_BUILD)/test_accuracy
+TEST_PREREQS += $(BENCH_BUILD)/alt_check.stamp $(BENCH_BUILD)/bench
+
+$(REPORT_VENV)/.installed:
+	$(PYTHON) -m venv $(REPORT_VENV)
+	$(REPORT_VENV)/bin/pip install --quiet --disable-pip-version-check $(MATPLOTLIB)
+	@touch $@
+
+.PHONY: report
+report: deps $(BENCH_BUILD)/bench $(REPORT_VENV)/.installed
+	$(BENCH_BUILD)/bench --seed $(BENCH_SEED) --n $(BENCH_N) --json $(BENCH_BUILD)/results.json | tee $(BENCH_BUILD)/bench.txt
+	$(REPORT_VENV)/bin/python bench/report.py $(BENCH_BUILD)/results.json bench/REPORT.md bench/error_vs_time.png
+
+$(BENCH_BUILD)/probe: bench/probe.c $(BENCH_SRCS) $(BENCH_HDRS)
+	@mkdir -p $(@D)
+	$(GCC) $(WARN_C) -O2 $(BENCH_INC) $< $(BENCH_SRCS) $(BENCH_LIBS) -o $@
+TEST_PREREQS += $(BENCH_BUILD)/probe
