@@ -167,12 +167,21 @@
 
 #include <float.h>
 #include <stdint.h>
-#if !defined(FLT_EVAL_METHOD) || FLT_EVAL_METHOD != 0
+/* 0: every type in its own precision. 16 and 32 (ISO/IEC TS 18661-3, e.g. gcc with
+   AVX512-FP16 in GNU modes) only widen _Float16: float and double still round to themselves. */
+#if !defined(FLT_EVAL_METHOD) || !(FLT_EVAL_METHOD == 0 || FLT_EVAL_METHOD == 16 || FLT_EVAL_METHOD == 32)
 #error "cylinder_isect.h: needs FLT_EVAL_METHOD == 0 (no excess precision, e.g. x87); use SSE2 or a target with native float/double arithmetic"
 #endif
 
 #ifndef CYL_DEF
 #define CYL_DEF static inline
+#endif
+/* Internal functions are inlined into the public ones even when large, so that options passed
+   as constants fold away inside them (the public functions stay CYL_DEF, the caller's choice). */
+#if defined(__GNUC__) || defined(__clang__)
+#define CYL__INL static inline __attribute__((always_inline))
+#else
+#define CYL__INL static inline
 #endif
 #ifndef CYL_HEADER_FILENAME
 #define CYL_HEADER_FILENAME "cylinder_isect.h"
@@ -303,6 +312,8 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__TWO_MANT 16777216.0f
 #define CYL__TANG CYL_TANGENT_TOLF
 #define CYL__PARA CYL_PARALLEL_TOLF
+#define CYL__RDIR 16.0f
+#define CYL__RLEN 65536.0f
 #include CYL_HEADER_FILENAME
 #undef CYL__BODY
 #undef CYL__R
@@ -321,6 +332,8 @@ CYL_DEF const char *cyl_strerror(int code)
 #undef CYL__TWO_MANT
 #undef CYL__TANG
 #undef CYL__PARA
+#undef CYL__RDIR
+#undef CYL__RLEN
 #endif
 
 /* ---- double instance ---- */
@@ -342,6 +355,8 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__TWO_MANT 9007199254740992.0
 #define CYL__TANG CYL_TANGENT_TOL
 #define CYL__PARA CYL_PARALLEL_TOL
+#define CYL__RDIR 18446744073709551616.0
+#define CYL__RLEN 3.402823669209384634633746e38
 #include CYL_HEADER_FILENAME
 #undef CYL__BODY
 #undef CYL__R
@@ -360,6 +375,8 @@ CYL_DEF const char *cyl_strerror(int code)
 #undef CYL__TWO_MANT
 #undef CYL__TANG
 #undef CYL__PARA
+#undef CYL__RDIR
+#undef CYL__RLEN
 #endif
 
 #endif /* CYLINDER_ISECT_H */
@@ -526,7 +543,7 @@ CYL_DEF void CYL__P(acc_dot_dw)(CYL__P(acc) *s, const CYL__R xh[3], const CYL__R
 
 /* ------------------------------------------------------------------ validation */
 
-CYL_DEF int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl)
+CYL__INL int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl)
 {
     int i;
     for (i = 0; i < 3; i++)
@@ -541,7 +558,7 @@ CYL_DEF int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
     return 0;
 }
 
-CYL_DEF int CYL__P(check)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
+CYL__INL int CYL__P(check)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
 {
     if (!ray || !cyl) return CYL_E_NULL;
     if (opts & ~(unsigned)CYL__SUPPORTED) return CYL_E_OPTION;
@@ -557,7 +574,6 @@ CYL_DEF int CYL__P(check)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
    wh + wl (precise path). */
 typedef struct CYL__P(frame) {
     CYL__R a[3], d[3], w[3], wl[3];
-    CYL__R werr[3];       /* bound on |exact w − w| componentwise, as used by the bounds   */
     CYL__R r, H;          /* radius, half height (+inf: infinite tube)                     */
     CYL__R aa, na;        /* |a|², |a|                                                     */
     CYL__R s[3], sl[3];   /* s = a × d (+ low part on the precise path)                    */
@@ -578,20 +594,18 @@ typedef struct CYL__P(cand) {
     unsigned flags;
 } CYL__P(cand);
 
-CYL_DEF void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+/* The frame. Arithmetic is equivariant under exact power-of-two scaling as long as nothing
+   overflows or underflows, so inputs of moderate size (the largest component of a and of d
+   within 2^±RDIR, the lengths |o − c|, r, h within 2^±RLEN: every product the solver forms then
+   stays far inside the exponent range) are used as they are, and anything else is first
+   scaled exactly so that those maxima land in [1, 2). Both give the same bits, up to the
+   scaling, wherever no intermediate underflows. */
+CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                              unsigned opts, CYL__P(frame) *f)
 {
-    CYL__R o[3], c[3], fa[2], fd[2], fl[2], L, rr = cyl->r, hh = cyl->h;
-    int i, ka, kd, kl, pre = 0;
-    for (i = 0; i < 3; i++) { o[i] = ray->o[i]; c[i] = cyl->c[i]; }
-    /* o − c overflows only when both are near the top of the range: halve the lengths
-       first (exact there), and account for it in the exponent. */
-    if (!(CYL__P(max)(CYL__P(amax3)(o), CYL__P(amax3)(c)) <= CYL__MAXR * CYL__C(0.25))) {
-        for (i = 0; i < 3; i++) { o[i] *= CYL__C(0.5); c[i] *= CYL__C(0.5); }
-        rr *= CYL__C(0.5);
-        hh *= CYL__C(0.5);
-        pre = 1;
-    }
+    const CYL__R rdir = CYL__RDIR, rlen = CYL__RLEN;
+    CYL__R ma = CYL__P(amax3)(cyl->a), md = CYL__P(amax3)(ray->d), L, rr = cyl->r, hh = cyl->h;
+    int i, hfin = hh <= CYL__MAXR;
 #ifndef CYL_NO_PRECISE
     f->precise = (opts & CYL_PRECISE) != 0;
 #else
@@ -601,36 +615,63 @@ CYL_DEF void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
     for (i = 0; i < 3; i++) {
 #ifndef CYL_NO_PRECISE
         if (f->precise)
-            CYL__P(two_sum)(o[i], -c[i], &f->w[i], &f->wl[i]);
+            CYL__P(two_sum)(ray->o[i], -cyl->c[i], &f->w[i], &f->wl[i]);
         else
 #endif
         {
-            f->w[i] = o[i] - c[i];
+            f->w[i] = ray->o[i] - cyl->c[i];
             f->wl[i] = 0;
         }
     }
     L = CYL__P(max)(CYL__P(amax3)(f->w), rr);
-    if (hh <= CYL__MAXR) L = CYL__P(max)(L, hh);
-    ka = CYL__P(ilogb)(CYL__P(amax3)(cyl->a));
-    kd = CYL__P(ilogb)(CYL__P(amax3)(ray->d));
-    kl = CYL__P(ilogb)(L);
-    CYL__P(pow2pair)(-ka, fa);
-    CYL__P(pow2pair)(-kd, fd);
-    CYL__P(pow2pair)(-kl, fl);
-    for (i = 0; i < 3; i++) {
-        f->a[i] = cyl->a[i] * fa[0] * fa[1];
-        f->d[i] = ray->d[i] * fd[0] * fd[1];
-        f->w[i] = f->w[i] * fl[0] * fl[1];
-        f->wl[i] = f->wl[i] * fl[0] * fl[1];
-        /* default: |exact − w| <= u|w|; precise: the exact w is w + wl. The absolute term
-           covers a component that the scaling made subnormal. */
-        f->werr[i] = (f->precise ? CYL__P(abs)(f->wl[i]) : CYL__U * CYL__P(abs)(f->w[i])) +
-                     CYL__MINR;
+    if (hfin) L = CYL__P(max)(L, hh);
+    if (ma >= 1 / rdir && ma <= rdir && md >= 1 / rdir && md <= rdir && L <= rlen &&
+        rr >= 1 / rlen && (!hfin || hh >= 1 / rlen)) {
+        for (i = 0; i < 3; i++) {
+            f->a[i] = cyl->a[i];
+            f->d[i] = ray->d[i];
+        }
+        f->r = rr;
+        f->H = hh * CYL__C(0.5);
+        f->e = f->el = 0;
+    } else {
+        CYL__R o[3], c[3], fa[2], fd[2], fl[2];
+        int kl, kd, pre = 0;
+        for (i = 0; i < 3; i++) { o[i] = ray->o[i]; c[i] = cyl->c[i]; }
+        /* o − c overflows only when both are near the top of the range: halve the lengths
+           first (exact there), and account for it in the exponent. */
+        if (!(CYL__P(max)(CYL__P(amax3)(o), CYL__P(amax3)(c)) <= CYL__MAXR * CYL__C(0.25))) {
+            for (i = 0; i < 3; i++) { o[i] *= CYL__C(0.5); c[i] *= CYL__C(0.5); }
+            rr *= CYL__C(0.5);
+            hh *= CYL__C(0.5);
+            pre = 1;
+            for (i = 0; i < 3; i++) {
+#ifndef CYL_NO_PRECISE
+                if (f->precise)
+                    CYL__P(two_sum)(o[i], -c[i], &f->w[i], &f->wl[i]);
+                else
+#endif
+                    f->w[i] = o[i] - c[i];
+            }
+            L = CYL__P(max)(CYL__P(amax3)(f->w), rr);
+            if (hfin) L = CYL__P(max)(L, hh);
+        }
+        kd = CYL__P(ilogb)(md);
+        kl = CYL__P(ilogb)(L);
+        CYL__P(pow2pair)(-CYL__P(ilogb)(ma), fa);
+        CYL__P(pow2pair)(-kd, fd);
+        CYL__P(pow2pair)(-kl, fl);
+        for (i = 0; i < 3; i++) {
+            f->a[i] = cyl->a[i] * fa[0] * fa[1];
+            f->d[i] = ray->d[i] * fd[0] * fd[1];
+            f->w[i] = f->w[i] * fl[0] * fl[1];
+            f->wl[i] = f->wl[i] * fl[0] * fl[1];
+        }
+        f->r = rr * fl[0] * fl[1];
+        f->H = hh * fl[0] * fl[1] * CYL__C(0.5);
+        f->e = kl + pre - kd;
+        f->el = kl + pre;
     }
-    f->r = rr * fl[0] * fl[1];
-    f->H = hh * fl[0] * fl[1] * CYL__C(0.5);
-    f->e = kl + pre - kd;
-    f->el = kl + pre;
     f->aa = CYL__P(dot)(f->a, f->a);
     f->na = CYL__SQRTR(f->aa);
 }
@@ -643,7 +684,7 @@ CYL_DEF void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
    u|w||s| from the rounding of w plus 4u|w||s| from s and the dot, so |ê − e| <=
    8u(1 + |w⊥|/r) for an origin near the axis plane, which is what CYL_TANGENT_TOL is set
    against. Returns 0 (no crossing), or 1 with t[0] <= t[1] and *tangent set. */
-CYL_DEF int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2], int *tangent)
+CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2], int *tangent)
 {
     CYL__R P, D, B, C, sq, q, band, r2 = f->r * f->r;
     int clamped = 0;
@@ -725,7 +766,7 @@ CYL_DEF int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2], int *tang
 
 /* The slab between the cap planes v = −H and v = +H along the ray: [sl[0], sl[1]] with the cap
    part of each end. Returns 0 when the ray runs beside the slab (a·d == 0 outside it). */
-CYL_DEF int CYL__P(slab)(const CYL__P(frame) *f, CYL__R sl[2], int part[2])
+CYL__INL int CYL__P(slab)(const CYL__P(frame) *f, CYL__R sl[2], int part[2])
 {
     CYL__R hna, tl, th;
     if (!(f->H <= CYL__MAXR)) { /* infinite tube */
@@ -773,7 +814,7 @@ CYL_DEF int CYL__P(slab)(const CYL__P(frame) *f, CYL__R sl[2], int part[2])
 
 /* Is the point x(t) of a cap inside its disk? (Parallel rays only: otherwise the wall interval
    decides.) |a × x|² <= r²|a|². */
-CYL_DEF int CYL__P(in_disk)(const CYL__P(frame) *f, CYL__R t)
+CYL__INL int CYL__P(in_disk)(const CYL__P(frame) *f, CYL__R t)
 {
     CYL__R x[3], y[3];
     int i;
@@ -783,7 +824,7 @@ CYL_DEF int CYL__P(in_disk)(const CYL__P(frame) *f, CYL__R t)
 }
 
 /* All crossings of the chosen surface (at most 2), sorted, then those in [tmin, tmax]. */
-CYL_DEF int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                           CYL__P(frame) *f, CYL__P(cand) out[2])
 {
     CYL__P(cand) c[2];
@@ -854,9 +895,10 @@ CYL_DEF int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                 }
         }
     }
-    CYL__P(pow2pair)(f->e, fs);
+    fs[0] = fs[1] = 1;
+    if (f->e) CYL__P(pow2pair)(f->e, fs);
     for (k = 0; k < n; k++) {
-        CYL__R tu = c[k].t * fs[0] * fs[1];
+        CYL__R tu = f->e ? c[k].t * fs[0] * fs[1] : c[k].t;
         if (tu >= ray->tmin && tu <= ray->tmax && CYL__P(finite)(tu)) {
             out[kept] = c[k];
             out[kept].tu = tu;
@@ -876,19 +918,24 @@ CYL_DEF int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
    Cap: the plane's residual g(t) = a·x(t) ∓ H|a| is linear with slope a·d.
    First-order terms are multiplied by (1 + 2^-8), which covers the second-order ones and the
    rounding of this evaluation; CYL__MINR terms cover products that underflowed. */
-CYL_DEF CYL__R CYL__P(bound)(const CYL__P(frame) *f, const CYL__P(cand) *c,
+CYL__INL CYL__R CYL__P(bound)(const CYL__P(frame) *f, const CYL__P(cand) *c,
                              const CYL__R y[3], CYL__R ys)
 {
     const CYL__R u = CYL__U, safe = CYL__C(1.0) + CYL__C(1.0) / CYL__C(256.0);
-    CYL__R t = c->t, at = CYL__P(abs)(t), d;
+    CYL__R t = c->t, at = CYL__P(abs)(t), d, werr[3];
+    int i;
+    /* |exact w − w|: u|w| for the one rounding of o − c, or |wl| when w + wl is exact; the
+       absolute term covers a component that the scaling made subnormal. */
+    for (i = 0; i < 3; i++)
+        werr[i] = (f->precise ? CYL__P(abs)(f->wl[i]) : u * CYL__P(abs)(f->w[i])) + CYL__MINR;
     if (c->part == CYL_SIDE) {
         CYL__R ey[3], g, E, F, Eb = 0, bb, Alo;
         int j;
         for (j = 0; j < 3; j++) {
             int k = (j + 1) % 3, l = (j + 2) % 3;
             ey[j] = 2 * u * (CYL__P(abs)(f->m[j]) + at * CYL__P(abs)(f->s[j])) +
-                    u * CYL__P(abs)(y[j]) + CYL__P(abs)(f->a[k]) * f->werr[l] +
-                    CYL__P(abs)(f->a[l]) * f->werr[k] + CYL__MINR;
+                    u * CYL__P(abs)(y[j]) + CYL__P(abs)(f->a[k]) * werr[l] +
+                    CYL__P(abs)(f->a[l]) * werr[k] + CYL__MINR;
         }
         g = CYL__P(dot)(y, y);
         E = 3 * u * g + 5 * u * f->R2;
@@ -907,10 +954,9 @@ CYL_DEF CYL__R CYL__P(bound)(const CYL__P(frame) *f, const CYL__P(cand) *c,
             d = CYL__SQRTR(F / Alo);
     } else {
         CYL__R x[3], ex = 0, g, Eg, slope;
-        int i;
         for (i = 0; i < 3; i++) {
             x[i] = CYL__FMAR(t, f->d[i], f->w[i]);
-            ex += CYL__P(abs)(f->a[i]) * (f->werr[i] + u * CYL__P(abs)(x[i]) + CYL__MINR);
+            ex += CYL__P(abs)(f->a[i]) * (werr[i] + u * CYL__P(abs)(x[i]) + CYL__MINR);
         }
         g = CYL__P(dot)(f->a, x);
         Eg = ex + 3 * u * CYL__P(adot)(f->a, x) + 4 * u * f->H * f->na;
@@ -922,7 +968,7 @@ CYL_DEF CYL__R CYL__P(bound)(const CYL__P(frame) *f, const CYL__P(cand) *c,
     return d * safe;
 }
 
-CYL_DEF void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *c, unsigned opts,
+CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *c, unsigned opts,
                             CYL__N(hit) *hit)
 {
     CYL__R no[3] = {0, 0, 0}, y[3], ys = 0, v, fs[2], face = 1;
@@ -968,8 +1014,9 @@ CYL_DEF void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *c, unsig
     }
     if (opts & CYL_OUTWARD) face = 1;
     for (i = 0; i < 3; i++) hit->n[i] = face * no[i];
-    hit->v = CYL__P(scale)(v, f->el);
-    CYL__P(pow2pair)(f->e, fs);
+    hit->v = f->el ? CYL__P(scale)(v, f->el) : v;
+    fs[0] = fs[1] = 1;
+    if (f->e) CYL__P(pow2pair)(f->e, fs);
     if (opts & CYL_NO_ERRBOUND) {
         hit->t_err = CYL__MAXR * 2;
     } else {
