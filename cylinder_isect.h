@@ -741,34 +741,33 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2], int *tan
     t[0] = q / f->A;
     t[1] = C / q;
     if (t[0] > t[1]) { CYL__R x = t[0]; t[0] = t[1]; t[1] = x; }
-#ifndef CYL_NO_PRECISE
-    if (f->precise) {
-        /* one Newton step per root on the residual f(t) = |m + t s|² − r²|a|², evaluated
-           with the same compensated sums: the start is within a few ulps, so the step
-           leaves the rounding of the residual, about u relative. */
-        int k, i;
-        for (k = 0; k < 2; k++) {
-            CYL__P(acc) sf;
-            CYL__R fp = 0;
-            sf.hi = sf.lo = 0;
-            for (i = 0; i < 3; i++) {
-                CYL__R p = t[k] * f->s[i], pe = CYL__FMAR(t[k], f->s[i], -p), yh, ye, yl;
-                CYL__R ra = f->r * f->a[i], ral = CYL__FMAR(f->r, f->a[i], -ra);
-                CYL__P(two_sum)(f->m[i], p, &yh, &ye);
-                yl = ye + pe + f->ml[i] + t[k] * f->sl[i];
-                CYL__P(acc_prod)(&sf, yh, yh);
-                sf.lo += 2 * yh * yl;
-                CYL__P(acc_prod)(&sf, -ra, ra);
-                sf.lo -= 2 * ra * ral;
-                fp += yh * f->s[i];
-            }
-            if (CYL__P(nonzero)(fp)) t[k] -= (sf.hi + sf.lo) / (2 * fp);
-        }
-        if (t[0] > t[1]) { CYL__R x = t[0]; t[0] = t[1]; t[1] = x; }
-    }
-#endif
     return 1;
 }
+
+#ifndef CYL_NO_PRECISE
+/* CYL_PRECISE: one Newton step on a wall root, with the residual f(t) = |m + t s|² − r²|a|²
+   evaluated in compensated arithmetic. The start is within a few ulps, so the step leaves
+   about the residual's own rounding, u relative. Done only for the hits returned. */
+CYL__INL CYL__R CYL__P(newton)(const CYL__P(frame) *f, CYL__R t)
+{
+    CYL__P(acc) sf;
+    CYL__R fp = 0;
+    int i;
+    sf.hi = sf.lo = 0;
+    for (i = 0; i < 3; i++) {
+        CYL__R p = t * f->s[i], pe = CYL__FMAR(t, f->s[i], -p), yh, ye, yl;
+        CYL__R ra = f->r * f->a[i], ral = CYL__FMAR(f->r, f->a[i], -ra);
+        CYL__P(two_sum)(f->m[i], p, &yh, &ye);
+        yl = ye + pe + f->ml[i] + t * f->sl[i];
+        CYL__P(acc_prod)(&sf, yh, yh);
+        sf.lo += 2 * yh * yl;
+        CYL__P(acc_prod)(&sf, -ra, ra);
+        sf.lo -= 2 * ra * ral;
+        fp += yh * f->s[i];
+    }
+    return CYL__P(nonzero)(fp) ? t - (sf.hi + sf.lo) / (2 * fp) : t;
+}
+#endif
 
 /* The slab between the cap planes v = −H and v = +H along the ray: [sl[0], sl[1]] with the cap
    part of each end. Returns 0 when the ray runs beside the slab (a·d == 0 outside it). */
@@ -964,11 +963,28 @@ CYL__INL CYL__R CYL__P(bound)(const CYL__P(frame) *f, const CYL__P(cand) *c,
     return d * safe;
 }
 
-CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *c, unsigned opts,
-                            CYL__N(hit) *hit)
+CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, unsigned opts,
+                            const CYL__N(ray) *ray, CYL__N(hit) *hit)
 {
+    CYL__P(cand) cc = *cin, *c = &cc;
     CYL__R no[3] = {0, 0, 0}, y[3], ys = 0, v, fs[2], face = 1;
     int i;
+#ifndef CYL_NO_PRECISE
+    if (f->precise && c->part == CYL_SIDE && !(c->flags & CYL_F_TANGENT)) {
+        CYL__R fs2[2];
+        c->t = CYL__P(newton)(f, c->t);
+        fs2[0] = fs2[1] = 1;
+        if (f->e) CYL__P(pow2pair)(f->e, fs2);
+        c->tu = c->t * fs2[0] * fs2[1];
+        /* the step moves t by a few ulps at most: keep it inside the accepted range */
+        if (c->tu < ray->tmin || c->tu > ray->tmax) {
+            c->tu = c->tu < ray->tmin ? ray->tmin : ray->tmax;
+            c->t = f->e ? CYL__P(scale)(c->tu, -f->e) : c->tu;
+        }
+    }
+#else
+    (void)ray;
+#endif
     hit->t = c->tu;
     hit->part = c->part;
     hit->flags = c->flags;
@@ -1033,7 +1049,7 @@ CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
     int rc = hit ? CYL__P(check)(ray, cyl, opts) : CYL_E_NULL;
     if (rc) return rc;
     if (!CYL__P(solve)(ray, cyl, opts, &f, c)) return CYL_MISS;
-    CYL__P(finish)(&f, &c[0], opts, hit);
+    CYL__P(finish)(&f, &c[0], opts, ray, hit);
     return CYL_HIT;
 }
 
@@ -1045,7 +1061,11 @@ CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder)
     int k, n, rc = hits ? CYL__P(check)(ray, cyl, opts) : CYL_E_NULL;
     if (rc) return rc;
     n = CYL__P(solve)(ray, cyl, opts, &f, c);
-    for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, &hits[k]);
+    for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, ray, &hits[k]);
+    if (n == 2 && hits[1].t < hits[0].t) { /* the precise step can swap a near-double root */
+        hits[1].t_err += hits[0].t - hits[1].t;
+        hits[1].t = hits[0].t;
+    }
     return n;
 }
 

@@ -36,7 +36,7 @@ static int cmp_dbl(const void *a, const void *b)
 int main(int argc, char **argv)
 {
     unsigned long long seed = 20261122ull;
-    int n = 2000, rounds = 7, i, prec_i, fam, caps, first = 1;
+    int n = 6000, rounds = 9, i, prec_i, fam, caps, first = 1;
     double block_ms = 4.0;
     const char *json = "build/bench/results.json";
     FILE *jf;

@@ -10,7 +10,7 @@ BENCH_LIBS   := -lmpfr -lgmp -lm
 # Timing build: hardware sqrt and FMA, as the header recommends for speed on x86-64.
 BENCH_OPT    ?= -O2 -march=native
 BENCH_SEED   ?= 20261122
-BENCH_N      ?= 2000
+BENCH_N      ?= 6000
 REPORT_VENV  := $(BUILD)/report-venv
 MATPLOTLIB   := matplotlib==3.9.2
 
@@ -47,7 +47,7 @@ $(REPORT_VENV)/.installed:
 .PHONY: report
 report: deps $(BENCH_BUILD)/bench $(REPORT_VENV)/.installed
 	$(BENCH_BUILD)/bench --seed $(BENCH_SEED) --n $(BENCH_N) --json $(BENCH_BUILD)/results.json | tee $(BENCH_BUILD)/bench.txt
-	$(REPORT_VENV)/bin/python bench/report.py $(BENCH_BUILD)/results.json bench/REPORT.md bench/error_vs_time.png
+	$(REPORT_VENV)/bin/python bench/report.py $(BENCH_BUILD)/results.json bench/REPORT.md bench/error_vs_time.png docs/accuracy.md
 
 $(BENCH_BUILD)/probe: bench/probe.c $(BENCH_SRCS) $(BENCH_HDRS)
 	@mkdir -p $(@D)
