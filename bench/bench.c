@@ -139,6 +139,9 @@ int main(int argc, char **argv)
                             t->n, t->n_error, t->ref_hits, t->lib_hits, t->miscls, t->miscls_out,
                             t->miscls_worst_index);
                     jnum(jf, "worst_margin", t->miscls_worst_margin, 1);
+                    fprintf(jf, "\"all_miscls\": %d, \"all_miscls_out\": %d, \"occ_miscls\": %d, "
+                                "\"occ_miscls_out\": %d, ",
+                            t->all_miscls, t->all_miscls_out, t->occ_miscls, t->occ_miscls_out);
                     fprintf(jf, "\"compared\": %d, \"cond_n\": %d, \"cond_worst_index\": %d, "
                                 "\"terr_checked\": %d, \"terr_fail\": %d, \"terr_fail_index\": %d, ",
                             t->compared, t->cond_n, t->cond_worst_index, t->terr_checked,

@@ -171,14 +171,14 @@ double ev_kappa(const ev_set *s, int i)
     double rd = k->r / dlen(k), T, scale, sn, e, kap = 1.0;
     if (ref->status != CYL_HIT) return 1.0;
     T = fabs(ref->hit[0].t[0]);
-    if (!(T > 0)) return INFINITY;
+    if (!(T > 0)) return (double)INFINITY;
     scale = T > rd ? T : rd;
     if (ref->hit[0].part == CYL_SIDE) {
         /* half chord r·sqrt(e)/(|d| sin): a relative change u of the data moves it by about
            u·r/(|d| sin sqrt(e)) */
         sn = sqrt(ref->sin2);
         e = fabs(ref->e);
-        if (!(sn > 0) || !(e > 0)) return INFINITY;
+        if (!(sn > 0) || !(e > 0)) return (double)INFINITY;
         kap = rd / (sn * sqrt(e)) / scale;
         if (kap < 1.0) kap = 1.0;
     }
@@ -224,10 +224,54 @@ static void run_one(const ev_variant *v, const ev_set *s, int i, ev_out *o)
     }
 }
 
+
 /* A hit farther than this from the reference t (relative to max(|t|, r/|d|)) is a different
    crossing, not an inaccurate one: even tangent contacts are within about sqrt(u) < 2^-8.
    A wall hit whose CYL_F_INSIDE differs from the reference's is the other crossing too. */
 #define EV_WRONG_CROSSING_REL 0x1p-8
+
+/* intersect_all (count, parts, crossings) and occluded against the reference, same options */
+static void check_all(const ev_variant *v, const ev_set *s, int i, const cyl_ref_result *ref,
+                      double band, ev_stats *st)
+{
+    const bench_case *k = &s->cases[i];
+    unsigned opts = v->opts | (s->caps ? CYL_CAPS : 0u);
+    double t[2] = {0, 0}, rd = k->r / dlen(k);
+    int part[2] = {0, 0}, cnt, occ, j, bad = 0;
+    unsigned fl[2] = {0u, 0u};
+    if (s->prec == 24) {
+        cylf_hit h[2];
+        const cylf_ray *ray = (const cylf_ray *)s->rays + i;
+        const cylf_cylinder *cyl = (const cylf_cylinder *)s->cyls + i;
+        memset(h, 0, sizeof h);
+        cnt = cylf_intersect_all(ray, cyl, opts, h);
+        occ = cylf_occluded(ray, cyl, opts);
+        for (j = 0; j < 2; ++j) { t[j] = (double)h[j].t; part[j] = h[j].part; fl[j] = h[j].flags; }
+    } else {
+        cyld_hit h[2];
+        const cyld_ray *ray = (const cyld_ray *)s->rays + i;
+        const cyld_cylinder *cyl = (const cyld_cylinder *)s->cyls + i;
+        memset(h, 0, sizeof h);
+        cnt = cyld_intersect_all(ray, cyl, opts, h);
+        occ = cyld_occluded(ray, cyl, opts);
+        for (j = 0; j < 2; ++j) { t[j] = h[j].t; part[j] = h[j].part; fl[j] = h[j].flags; }
+    }
+    if (cnt != ref->count) bad = 1;
+    for (j = 0; !bad && j < cnt && j < 2; ++j) {
+        double T = ref->hit[j].t[0], scale = fabs(T) > rd ? fabs(T) : rd;
+        if (part[j] != ref->hit[j].part) bad = 1;
+        else if (part[j] == CYL_SIDE && ((fl[j] ^ ref->hit[j].flags) & CYL_F_INSIDE) != 0u) bad = 1;
+        else if (!(fabs(t[j] - T) / scale <= EV_WRONG_CROSSING_REL)) bad = 1;
+    }
+    if (bad) {
+        st->all_miscls++;
+        if (ref->margin > band) st->all_miscls_out++;
+    }
+    if (occ != (ref->count > 0 ? 1 : 0)) {
+        st->occ_miscls++;
+        if (ref->margin > band) st->occ_miscls_out++;
+    }
+}
 
 void ev_eval(const ev_variant *v, const ev_set *s, ev_stats *st)
 {
@@ -273,6 +317,7 @@ void ev_eval(const ev_variant *v, const ev_set *s, ev_stats *st)
             else if (ref->count == 2 && fabs(o.t - ref->hit[1].t[0]) < err) wrong = 1;
             else if (!(err / scale <= EV_WRONG_CROSSING_REL)) wrong = 1;
         }
+        if (v->kind == EV_LIB) check_all(v, s, i, ref, band, st);
         if (wrong) {
             st->miscls++;
             if (ref->margin > band) st->miscls_out++;

@@ -55,7 +55,9 @@ typedef struct ev_stats {
     double nrm_max;             /* max |n - n_exact| (about the angle in radians) */
     int terr_checked, terr_fail;            /* exact t outside [t - t_err, t + t_err] */
     int terr_fail_index;
-    double ns_per_call;         /* filled by ev_time */
+    int all_miscls, all_miscls_out;   /* intersect_all: count, part or crossing differs */
+    int occ_miscls, occ_miscls_out;   /* occluded differs from "the reference has a hit" */
+    double ns_per_call;         /* filled by bench.c's timing */
 } ev_stats;
 
 /* Accuracy of a variant on a set. */

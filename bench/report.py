@@ -50,12 +50,20 @@ def fmt(x, nd=3):
     return f"{x:.{nd}g}"
 
 
+def all_occ(r):
+    if r["kind"] != 0:
+        return "-"
+    return f"{r.get('all_miscls_out', 0)} / {r.get('occ_miscls_out', 0)}"
+
+
 def agg(rows):
     """Aggregate rows (sets of one variant) into one summary."""
     out = {
         "n": sum(r["n"] for r in rows),
         "miscls": sum(r["miscls"] for r in rows),
         "miscls_out": sum(r["miscls_out"] for r in rows),
+        "all_out": sum(r.get("all_miscls_out", 0) for r in rows),
+        "occ_out": sum(r.get("occ_miscls_out", 0) for r in rows),
         "worst_margin": max([r["worst_margin"] for r in rows if r["miscls"] > 0] or [0.0]),
         "compared": sum(r["compared"] for r in rows),
         "cond_n": sum(r["cond_n"] for r in rows),
@@ -148,10 +156,11 @@ def main():
     fam2 = ["well", "huge", "tiny", "axis"]
     for prec in (24, 53):
         a = agg(sel(prec, "lib", fam2))
-        ok = a["miscls_out"] == 0 and a["cond_ulp_max"] <= 4
+        ok = a["miscls_out"] + a["all_out"] + a["occ_out"] == 0 and a["cond_ulp_max"] <= 4
         L.append(f"| 2. default path, well/huge/tiny/axis: no misclassification beyond "
                  f"2^-{prec - 8}, t within 4 ulps | {PNAME[prec]} | {'PASS' if ok else 'FAIL'} | "
-                 f"{a['miscls_out']} beyond band; max {fmt(a['cond_ulp_max'])} ulps over "
+                 f"{a['miscls_out']} beyond band (intersect_all {a['all_out']}, occluded "
+                 f"{a['occ_out']}); max {fmt(a['cond_ulp_max'])} ulps over "
                  f"{a['cond_n']} well-conditioned hits |")
     for prec in (24, 53):
         rs = sel(prec, "lib+PRECISE")
@@ -159,7 +168,7 @@ def main():
             L.append(f"| 3. CYL_PRECISE | {PNAME[prec]} | n/a | not available in this build |")
             continue
         a = agg(rs)
-        ok = a["miscls_out"] == 0 and a["cond_ulp_max"] <= 2
+        ok = a["miscls_out"] + a["all_out"] + a["occ_out"] == 0 and a["cond_ulp_max"] <= 2
         ratios = []
         for fam in R["families"]:
             for caps in (0, 1):
@@ -171,7 +180,8 @@ def main():
         rmean = sum(ratios) / len(ratios) if ratios else float("nan")
         L.append(f"| 3. CYL_PRECISE, all families: no misclassification beyond band, t within "
                  f"2 ulps (well-conditioned) | {PNAME[prec]} | {'PASS' if ok else 'FAIL'} | "
-                 f"{a['miscls_out']} beyond band (worst margin {fmt(a['worst_margin'])}); max "
+                 f"{a['miscls_out']} beyond band (worst margin {fmt(a['worst_margin'])}; "
+                 f"intersect_all {a['all_out']}, occluded {a['occ_out']}); max "
                  f"{fmt(a['cond_ulp_max'])} ulps over {a['cond_n']} hits |")
         L.append(f"| 3. CYL_PRECISE at most 2x the default path's time | {PNAME[prec]} | "
                  f"{'PASS' if rmax <= 2 else 'FAIL'} | time ratio mean {fmt(rmean)}, worst "
@@ -213,9 +223,9 @@ def main():
     for prec in (24, 53):
         L.append(f"### {PNAME[prec]}\n")
         L.append("| family | caps | variant | cases | ref hits | misclassified (beyond band) | "
-                 "worst margin | ulps median | p99 | max | cond max (n) | max rel | max n err "
-                 "| t_err fail | ns/call |")
-        L.append("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+                 "worst margin | all / occluded beyond band | ulps median | p99 | max "
+                 "| cond max (n) | max rel | max n err | t_err fail | ns/call |")
+        L.append("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
         for fam in R["families"]:
             for caps in (0, 1):
                 for r in sel(prec, None, [fam], caps):
@@ -223,6 +233,7 @@ def main():
                     L.append(f"| {fam} | {caps} | {r['variant']} | {r['n']} | {r['ref_hits']} | "
                              f"{r['miscls']} ({r['miscls_out']}) | "
                              f"{fmt(r['worst_margin']) if r['miscls'] else '-'} | "
+                             f"{all_occ(r)} | "
                              f"{fmt(r['ulp_median'])} | {fmt(r['ulp_p99'])} | "
                              f"{fmt(r['ulp_max'])} | {fmt(r['cond_ulp_max'])} ({r['cond_n']}) | "
                              f"{fmt(r['rel_max'])} | "
