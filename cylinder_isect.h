@@ -584,7 +584,7 @@ typedef struct CYL__P(frame) {
     CYL__R aa, na;        /* |a|², |a|                                                     */
     CYL__R s[3], sl[3];   /* s = a × d (+ low part on the precise path)                    */
     CYL__R m[3], ml[3];   /* m = a × w (+ low part)                                        */
-    CYL__R A, R2;         /* |s|², r²|a|²                                                  */
+    CYL__R A, R2, sq;     /* |s|², r²|a|², √(|a|²D) (the wall's half discriminant)       */
     CYL__R ad, aw;        /* a·d, a·w                                                      */
     CYL__R awl, nal, adl; /* precise path: low parts of a·w, |a| and a·d                    */
     int e;                /* user t = frame t · 2^e                                        */
@@ -731,7 +731,7 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2], int *tan
     *tangent = D <= band;
     if (*tangent && (opts & CYL_NO_TANGENT)) return 0;
     if (D < 0) { D = 0; clamped = 1; }
-    sq = CYL__SQRTR(f->aa * D);
+    sq = f->sq = CYL__SQRTR(f->aa * D);
     q = -(B + (B < 0 ? -sq : sq));
     if (clamped || !CYL__P(nonzero)(q)) {
         /* a contact (within the band) at the point of closest approach */
@@ -745,13 +745,19 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2], int *tan
 }
 
 #ifndef CYL_NO_PRECISE
-/* CYL_PRECISE: one Newton step on a wall root, with the residual f(t) = |m + t s|² − r²|a|²
-   evaluated in compensated arithmetic. The start is within a few ulps, so the step leaves
-   about the residual's own rounding, u relative. Done only for the hits returned. */
-CYL__INL CYL__R CYL__P(newton)(const CYL__P(frame) *f, CYL__R t)
+/* CYL_PRECISE: one exact-quadratic correction of a wall root. With F = f(t) evaluated in
+   compensated arithmetic and G = s·(m + t s) (= f'(t)/2), the roots of
+   f(t + δ) = F + 2Gδ + Aδ² are δ = (−G ∓ √(G² − AF))/A, and G² − AF = |a|²D is the
+   discriminant the solver already has (it does not depend on the shift). Each root is taken in
+   the form that does not cancel, so the step is accurate even when the two roots are a few ulps
+   apart (a plain Newton step from near the midpoint would jump away). The start is within a
+   few ulps, so hi + lo carries the root with about the residual's own rounding, u² relative
+   to the terms, and hi is the root correctly rounded in nearly every case. */
+CYL__INL void CYL__P(refine)(const CYL__P(frame) *f, CYL__R t, int upper, CYL__R *hi,
+                             CYL__R *lo)
 {
     CYL__P(acc) sf;
-    CYL__R fp = 0;
+    CYL__R G = 0, F, dt, sq = f->sq;
     int i;
     sf.hi = sf.lo = 0;
     for (i = 0; i < 3; i++) {
@@ -763,9 +769,35 @@ CYL__INL CYL__R CYL__P(newton)(const CYL__P(frame) *f, CYL__R t)
         sf.lo += 2 * yh * yl;
         CYL__P(acc_prod)(&sf, -ra, ra);
         sf.lo -= 2 * ra * ral;
-        fp += yh * f->s[i];
+        G += (yh + yl) * f->s[i];
     }
-    return CYL__P(nonzero)(fp) ? t - (sf.hi + sf.lo) / (2 * fp) : t;
+    F = sf.hi + sf.lo;
+    if (!upper)
+        dt = G > 0 ? (-G - sq) / f->A : (sq - G > 0 ? F / (sq - G) : 0);
+    else
+        dt = G < 0 ? (sq - G) / f->A : (G + sq > 0 ? -F / (G + sq) : 0);
+    *hi = t + dt; /* |dt| is a few ulps of t: Fast2Sum applies */
+    *lo = dt - (*hi - t);
+}
+
+/* Which side of the cap planes the wall root t + tl lies on, from the sign of
+   a·x ± H|a| = aw + (t + tl)·ad ± H·(na + nal) summed in compensated arithmetic. */
+CYL__INL int CYL__P(side)(const CYL__P(frame) *f, CYL__R t, CYL__R tl)
+{
+    CYL__P(acc) b, lo, hi;
+    if (!(f->H <= CYL__MAXR) || !CYL__P(nonzero)(f->ad)) return 0;
+    b.hi = b.lo = 0;
+    CYL__P(acc_prod)(&b, t, f->ad);
+    b.lo += t * f->adl + tl * f->ad + f->awl;
+    CYL__P(acc_add)(&b, f->aw);
+    lo = hi = b;
+    CYL__P(acc_prod)(&lo, f->H, f->na);   /* v + H, times |a| */
+    lo.lo += f->H * f->nal;
+    CYL__P(acc_prod)(&hi, -f->H, f->na);  /* v − H, times |a| */
+    hi.lo -= f->H * f->nal;
+    if (lo.hi + lo.lo < 0) return f->ad > 0 ? -1 : 1;
+    if (hi.hi + hi.lo > 0) return f->ad > 0 ? 1 : -1;
+    return 0;
 }
 #endif
 
@@ -879,20 +911,34 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         }
     } else if (CYL__P(wall)(f, opts, tw, &tangent)) {
         unsigned tf = tangent ? CYL_F_TANGENT : 0u;
+        int pos[2]; /* each wall root: -1 before the slab, 0 in it (inclusive), +1 after */
+#ifndef CYL_NO_PRECISE
+        if (f->precise && !tangent) {
+            /* the roots to about u², and their side of the cap planes from the axial
+               coordinate itself: comparing rounded t's would decide the rim by t's rounding */
+            CYL__R tl[2];
+            for (k = 0; k < 2; k++) {
+                CYL__P(refine)(f, tw[k], k, &tw[k], &tl[k]);
+                pos[k] = CYL__P(side)(f, tw[k], tl[k]);
+            }
+        } else
+#endif
+        {
+            for (k = 0; k < 2; k++) pos[k] = tw[k] < sl[0] ? -1 : (tw[k] > sl[1] ? 1 : 0);
+        }
         if (caps && f->H <= CYL__MAXR) {
-            CYL__R lo = CYL__P(max)(tw[0], sl[0]), hi = tw[1] < sl[1] ? tw[1] : sl[1];
-            if (lo <= hi) {
-                c[0].t = lo;
-                c[0].part = tw[0] >= sl[0] ? CYL_SIDE : sp[0];
-                c[0].flags = c[0].part == CYL_SIDE ? tf : 0u;
-                c[1].t = hi;
-                c[1].part = tw[1] <= sl[1] ? CYL_SIDE : sp[1];
-                c[1].flags = CYL_F_INSIDE | (c[1].part == CYL_SIDE ? tf : 0u);
+            if (pos[0] <= 0 && pos[1] >= 0) {
+                c[0].t = pos[0] ? sl[0] : tw[0];
+                c[0].part = pos[0] ? sp[0] : CYL_SIDE;
+                c[0].flags = pos[0] ? 0u : tf;
+                c[1].t = pos[1] ? sl[1] : tw[1];
+                c[1].part = pos[1] ? sp[1] : CYL_SIDE;
+                c[1].flags = CYL_F_INSIDE | (pos[1] ? 0u : tf);
                 n = 2;
             }
         } else {
             for (k = 0; k < 2; k++)
-                if (tw[k] >= sl[0] && tw[k] <= sl[1]) {
+                if (!pos[k]) {
                     c[n].t = tw[k];
                     c[n].part = CYL_SIDE;
                     c[n].flags = tf | (k ? CYL_F_INSIDE : 0u);
@@ -963,28 +1009,11 @@ CYL__INL CYL__R CYL__P(bound)(const CYL__P(frame) *f, const CYL__P(cand) *c,
     return d * safe;
 }
 
-CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, unsigned opts,
-                            const CYL__N(ray) *ray, CYL__N(hit) *hit)
+CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *c, unsigned opts,
+                            CYL__N(hit) *hit)
 {
-    CYL__P(cand) cc = *cin, *c = &cc;
     CYL__R no[3] = {0, 0, 0}, y[3], ys = 0, v, fs[2], face = 1;
     int i;
-#ifndef CYL_NO_PRECISE
-    if (f->precise && c->part == CYL_SIDE && !(c->flags & CYL_F_TANGENT)) {
-        CYL__R fs2[2];
-        c->t = CYL__P(newton)(f, c->t);
-        fs2[0] = fs2[1] = 1;
-        if (f->e) CYL__P(pow2pair)(f->e, fs2);
-        c->tu = c->t * fs2[0] * fs2[1];
-        /* the step moves t by a few ulps at most: keep it inside the accepted range */
-        if (c->tu < ray->tmin || c->tu > ray->tmax) {
-            c->tu = c->tu < ray->tmin ? ray->tmin : ray->tmax;
-            c->t = f->e ? CYL__P(scale)(c->tu, -f->e) : c->tu;
-        }
-    }
-#else
-    (void)ray;
-#endif
     hit->t = c->tu;
     hit->part = c->part;
     hit->flags = c->flags;
@@ -1002,7 +1031,11 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, un
         v = CYL__FMAR(c->t, f->ad, f->aw) / f->na;
         v = v > f->H ? f->H : (v < -f->H ? -f->H : v);
         if (!(opts & CYL_NO_NORMAL)) {
-            CYL__P(cross)(y, f->a, no);
+            /* y ⊥ a, so |y × a| = |y||a| has no cancellation: one FMA per component is enough
+               for a normal accurate to a few u. */
+            no[0] = CYL__FMAR(y[1], f->a[2], -(y[2] * f->a[1]));
+            no[1] = CYL__FMAR(y[2], f->a[0], -(y[0] * f->a[2]));
+            no[2] = CYL__FMAR(y[0], f->a[1], -(y[1] * f->a[0]));
             len2 = CYL__P(dot)(no, no);
             if (len2 > 0) {
                 CYL__R inv = 1 / CYL__SQRTR(len2);
@@ -1049,7 +1082,7 @@ CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
     int rc = hit ? CYL__P(check)(ray, cyl, opts) : CYL_E_NULL;
     if (rc) return rc;
     if (!CYL__P(solve)(ray, cyl, opts, &f, c)) return CYL_MISS;
-    CYL__P(finish)(&f, &c[0], opts, ray, hit);
+    CYL__P(finish)(&f, &c[0], opts, hit);
     return CYL_HIT;
 }
 
@@ -1061,11 +1094,7 @@ CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder)
     int k, n, rc = hits ? CYL__P(check)(ray, cyl, opts) : CYL_E_NULL;
     if (rc) return rc;
     n = CYL__P(solve)(ray, cyl, opts, &f, c);
-    for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, ray, &hits[k]);
-    if (n == 2 && hits[1].t < hits[0].t) { /* the precise step can swap a near-double root */
-        hits[1].t_err += hits[0].t - hits[1].t;
-        hits[1].t = hits[0].t;
-    }
+    for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, &hits[k]);
     return n;
 }
 

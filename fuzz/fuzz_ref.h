@@ -63,6 +63,8 @@ static unsigned long fz_ref_decisions;
       if (!(at < ((PREC) == 24 ? 0x1p124 : 0x1p1020)) || !(at > ((PREC) == 24 ? 0x1p-100 : 0x1p-1000))) return; \
     }                                                                                          \
     if (rr.count == 2 && !(rr.hit[0].t[0] < rr.hit[1].t[0])) return;                           \
+    /* and our own long double analysis must agree that every decision is clear */             \
+    if (!fz_well_conditioned(&p, &g, opts, u)) return;                                         \
     fz_ref_decisions++;                                                                        \
     if (lib.rc != rr.count)                                                                    \
       fz_failf("%s tier: %d hits, the exact answer has %d (decision margin %.3g)", tier, lib.rc, rr.count, rr.margin); \
