@@ -178,8 +178,9 @@ int cyl_ref_intersect(const cyl_ref_case *in, cyl_ref_result *res)
     res->m_tangent = res->m_parallel = res->m_rim = res->m_trange = res->margin = (double)INFINITY;
     res->prec_bits = 0;
 
-    /* ---- validation, in the library's order */
-    if (!(in->opts & CYL_TRUSTED)) {
+    /* ---- validation, in the library's order. Also under CYL_TRUSTED: there the library's
+       answer for invalid input is unspecified, and the exact arithmetic needs finite input. */
+    {
         if (!all_finite(in->o, 3) || !all_finite(in->d, 3) || !all_finite(in->c, 3) ||
             !all_finite(in->a, 3)) return res->status = CYL_E_NONFINITE;
         if (all_zero(in->d)) return res->status = CYL_E_ZERO_DIR;

@@ -38,7 +38,8 @@
  *   CYL_NO_TANGENT → contacts with |1 − ρ²/r²| ≤ tangent tolerance are misses. The tolerances
  *   are the library's macros for precision 24 (float) or 53 (double), chosen by case.prec.
  *   Open tube: both wall crossings; capped: entry and exit of the solid. Validation errors are
- *   returned in the library's order unless CYL_TRUSTED is set.
+ *   returned in the library's order, also under CYL_TRUSTED (whose answer for invalid input is
+ *   unspecified: compare only valid cases).
  */
 #ifndef CYL_REF_H
 #define CYL_REF_H
