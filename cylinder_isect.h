@@ -393,17 +393,17 @@ typedef struct CYL__N(hit) {
 
 /* ------------------------------------------------------------------ small exact tools */
 
-CYL_DEF CYL__R CYL__P(abs)(CYL__R x) { return x < 0 ? -x : x; }
-CYL_DEF CYL__R CYL__P(max)(CYL__R x, CYL__R y) { return x > y ? x : y; }
-CYL_DEF int CYL__P(finite)(CYL__R x) { return x >= -CYL__MAXR && x <= CYL__MAXR; }
-CYL_DEF int CYL__P(nonzero)(CYL__R x) { return x < 0 || x > 0; }
-CYL_DEF CYL__R CYL__P(amax3)(const CYL__R x[3])
+CYL__INL CYL__R CYL__P(abs)(CYL__R x) { return x < 0 ? -x : x; }
+CYL__INL CYL__R CYL__P(max)(CYL__R x, CYL__R y) { return x > y ? x : y; }
+CYL__INL int CYL__P(finite)(CYL__R x) { return x >= -CYL__MAXR && x <= CYL__MAXR; }
+CYL__INL int CYL__P(nonzero)(CYL__R x) { return x < 0 || x > 0; }
+CYL__INL CYL__R CYL__P(amax3)(const CYL__R x[3])
 {
     return CYL__P(max)(CYL__P(abs)(x[0]), CYL__P(max)(CYL__P(abs)(x[1]), CYL__P(abs)(x[2])));
 }
 
 /* floor(log2(x)) for finite x > 0, from the exponent bits: no libm, exact for subnormals. */
-CYL_DEF int CYL__P(ilogb)(CYL__R x)
+CYL__INL int CYL__P(ilogb)(CYL__R x)
 {
     CYL__UINT b;
     int e, shift = 0;
@@ -419,7 +419,7 @@ CYL_DEF int CYL__P(ilogb)(CYL__R x)
 }
 
 /* 2^k for k in the normal exponent range [1 - EBIAS, EBIAS]. */
-CYL_DEF CYL__R CYL__P(exp2i)(int k)
+CYL__INL CYL__R CYL__P(exp2i)(int k)
 {
     CYL__UINT b = (CYL__UINT)(k + CYL__EBIAS) << (CYL__MANT - 1);
     CYL__R x;
@@ -430,7 +430,7 @@ CYL_DEF CYL__R CYL__P(exp2i)(int k)
 /* Two factors whose product is 2^k, each a normal number, for |k| up to twice the exponent
    range. Both move x the same way, so x * f1 * f2 rounds at most where the final value is
    subnormal. */
-CYL_DEF void CYL__P(pow2pair)(int k, CYL__R f[2])
+CYL__INL void CYL__P(pow2pair)(int k, CYL__R f[2])
 {
     int lo = 1 - CYL__EBIAS, hi = CYL__EBIAS;
     int k1 = k < lo ? lo : (k > hi ? hi : k);
@@ -440,7 +440,7 @@ CYL_DEF void CYL__P(pow2pair)(int k, CYL__R f[2])
     f[1] = CYL__P(exp2i)(k2);
 }
 
-CYL_DEF CYL__R CYL__P(scale)(CYL__R x, int k)
+CYL__INL CYL__R CYL__P(scale)(CYL__R x, int k)
 {
     CYL__R f[2];
     CYL__P(pow2pair)(k, f);
@@ -448,7 +448,7 @@ CYL_DEF CYL__R CYL__P(scale)(CYL__R x, int k)
 }
 
 /* ab − cd with Kahan's FMA algorithm: relative error <= 2u (Jeannerod, Louvet, Muller 2013). */
-CYL_DEF CYL__R CYL__P(dop)(CYL__R a, CYL__R b, CYL__R c, CYL__R d)
+CYL__INL CYL__R CYL__P(dop)(CYL__R a, CYL__R b, CYL__R c, CYL__R d)
 {
     CYL__R w = c * d;
     CYL__R e = CYL__FMAR(-c, d, w);
@@ -456,25 +456,25 @@ CYL_DEF CYL__R CYL__P(dop)(CYL__R a, CYL__R b, CYL__R c, CYL__R d)
     return f + e;
 }
 
-CYL_DEF void CYL__P(cross)(const CYL__R x[3], const CYL__R y[3], CYL__R z[3])
+CYL__INL void CYL__P(cross)(const CYL__R x[3], const CYL__R y[3], CYL__R z[3])
 {
     z[0] = CYL__P(dop)(x[1], y[2], x[2], y[1]);
     z[1] = CYL__P(dop)(x[2], y[0], x[0], y[2]);
     z[2] = CYL__P(dop)(x[0], y[1], x[1], y[0]);
 }
 
-CYL_DEF CYL__R CYL__P(dot)(const CYL__R x[3], const CYL__R y[3])
+CYL__INL CYL__R CYL__P(dot)(const CYL__R x[3], const CYL__R y[3])
 {
     return CYL__FMAR(x[2], y[2], CYL__FMAR(x[1], y[1], x[0] * y[0]));
 }
 
-CYL_DEF CYL__R CYL__P(asum3)(const CYL__R x[3])
+CYL__INL CYL__R CYL__P(asum3)(const CYL__R x[3])
 {
     return CYL__P(abs)(x[0]) + CYL__P(abs)(x[1]) + CYL__P(abs)(x[2]);
 }
 
 /* |x|·|y| summed componentwise: the scale of a dot product's rounding error. */
-CYL_DEF CYL__R CYL__P(adot)(const CYL__R x[3], const CYL__R y[3])
+CYL__INL CYL__R CYL__P(adot)(const CYL__R x[3], const CYL__R y[3])
 {
     return CYL__P(abs)(x[0] * y[0]) + CYL__P(abs)(x[1] * y[1]) + CYL__P(abs)(x[2] * y[2]);
 }
@@ -485,21 +485,21 @@ CYL_DEF CYL__R CYL__P(adot)(const CYL__R x[3], const CYL__R y[3])
    error about u·|sum| + γ²·Σ|terms|. */
 typedef struct CYL__P(acc) { CYL__R hi, lo; } CYL__P(acc);
 
-CYL_DEF void CYL__P(two_sum)(CYL__R a, CYL__R b, CYL__R *s, CYL__R *e)
+CYL__INL void CYL__P(two_sum)(CYL__R a, CYL__R b, CYL__R *s, CYL__R *e)
 {
     CYL__R x = a + b, bb = x - a;
     *s = x;
     *e = (a - (x - bb)) + (b - bb);
 }
 
-CYL_DEF void CYL__P(acc_add)(CYL__P(acc) *s, CYL__R x)
+CYL__INL void CYL__P(acc_add)(CYL__P(acc) *s, CYL__R x)
 {
     CYL__R e;
     CYL__P(two_sum)(s->hi, x, &s->hi, &e);
     s->lo += e;
 }
 
-CYL_DEF void CYL__P(acc_prod)(CYL__P(acc) *s, CYL__R x, CYL__R y)
+CYL__INL void CYL__P(acc_prod)(CYL__P(acc) *s, CYL__R x, CYL__R y)
 {
     CYL__R p = x * y;
     CYL__R e = CYL__FMAR(x, y, -p);
@@ -509,25 +509,30 @@ CYL_DEF void CYL__P(acc_prod)(CYL__P(acc) *s, CYL__R x, CYL__R y)
 
 /* z = x × (yh + yl) as a double word zh + zl (x exact): each component's two products are
    split exactly, so zh + zl is accurate to O(u²) relative. */
-CYL_DEF void CYL__P(cross_dw)(const CYL__R x[3], const CYL__R yh[3], const CYL__R yl[3],
+/* One component x_k (yh + yl)_l − x_l (yh + yl)_k as hi + lo. */
+CYL__INL void CYL__P(dop_dw)(CYL__R xk, CYL__R xl, CYL__R yhl, CYL__R yhk, CYL__R yll,
+                            CYL__R ylk, CYL__R *zh, CYL__R *zl)
+{
+    CYL__R p1 = xk * yhl, e1 = CYL__FMAR(xk, yhl, -p1);
+    CYL__R p2 = xl * yhk, e2 = CYL__FMAR(xl, yhk, -p2);
+    CYL__R h, e3, lo;
+    CYL__P(two_sum)(p1, -p2, &h, &e3);
+    lo = (e1 - e2) + e3 + (xk * yll - xl * ylk);
+    *zh = h + lo;
+    *zl = lo - (*zh - h);
+}
+
+CYL__INL void CYL__P(cross_dw)(const CYL__R x[3], const CYL__R yh[3], const CYL__R yl[3],
                               CYL__R zh[3], CYL__R zl[3])
 {
-    int j;
-    for (j = 0; j < 3; j++) {
-        int k = (j + 1) % 3, l = (j + 2) % 3;
-        CYL__P(acc) s;
-        s.hi = 0;
-        s.lo = x[k] * yl[l] - x[l] * yl[k];
-        CYL__P(acc_prod)(&s, x[k], yh[l]);
-        CYL__P(acc_prod)(&s, -x[l], yh[k]);
-        zh[j] = s.hi + s.lo;
-        zl[j] = s.lo - (zh[j] - s.hi);
-    }
+    CYL__P(dop_dw)(x[1], x[2], yh[2], yh[1], yl[2], yl[1], &zh[0], &zl[0]);
+    CYL__P(dop_dw)(x[2], x[0], yh[0], yh[2], yl[0], yl[2], &zh[1], &zl[1]);
+    CYL__P(dop_dw)(x[0], x[1], yh[1], yh[0], yl[1], yl[0], &zh[2], &zl[2]);
 }
 
 /* (nh + nl) / (dh + dl) to about u: one correction of the quotient with the exact remainder
    of nh − q·dh (FMA). */
-CYL_DEF CYL__R CYL__P(div_dw)(CYL__R nh, CYL__R nl, CYL__R dh, CYL__R dl)
+CYL__INL CYL__R CYL__P(div_dw)(CYL__R nh, CYL__R nl, CYL__R dh, CYL__R dl)
 {
     CYL__R q = nh / dh;
     CYL__R rem = CYL__FMAR(-q, dh, nh) + nl - q * dl;
@@ -535,14 +540,14 @@ CYL_DEF CYL__R CYL__P(div_dw)(CYL__R nh, CYL__R nl, CYL__R dh, CYL__R dl)
 }
 
 /* Σ (xh + xl)_i (yh + yl)_i into an accumulator. */
-CYL_DEF void CYL__P(acc_dot_dw)(CYL__P(acc) *s, const CYL__R xh[3], const CYL__R xl[3],
+CYL__INL void CYL__P(acc_dot_dw)(CYL__P(acc) *s, const CYL__R xh[3], const CYL__R xl[3],
                                 const CYL__R yh[3], const CYL__R yl[3])
 {
-    int i;
-    for (i = 0; i < 3; i++) {
-        CYL__P(acc_prod)(s, xh[i], yh[i]);
-        s->lo += xh[i] * yl[i] + xl[i] * yh[i];
-    }
+    CYL__P(acc_prod)(s, xh[0], yh[0]);
+    CYL__P(acc_prod)(s, xh[1], yh[1]);
+    CYL__P(acc_prod)(s, xh[2], yh[2]);
+    s->lo += (xh[0] * yl[0] + xl[0] * yh[0]) + (xh[1] * yl[1] + xl[1] * yh[1]) +
+             (xh[2] * yl[2] + xl[2] * yh[2]);
 }
 #endif
 
@@ -585,6 +590,7 @@ typedef struct CYL__P(frame) {
     CYL__R s[3], sl[3];   /* s = a × d (+ low part on the precise path)                    */
     CYL__R m[3], ml[3];   /* m = a × w (+ low part)                                        */
     CYL__R A, R2, sq;     /* |s|², r²|a|², √(|a|²D) (the wall's half discriminant)       */
+    CYL__R R2l;           /* precise path: low part of r²|a|²                              */
     CYL__R ad, aw;        /* a·d, a·w                                                      */
     CYL__R awl, nal, adl; /* precise path: low parts of a·w, |a| and a·d                    */
     int e;                /* user t = frame t · 2^e                                        */
@@ -704,16 +710,21 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2], int *tan
         P = sp.hi + sp.lo;
         CYL__P(acc_dot_dw)(&sb, f->m, f->ml, f->s, f->sl);
         B = sb.hi + sb.lo;
-        /* C = |m|² − r²|a|² and D = r²|s|² − P², each as one compensated sum. */
-        CYL__P(acc_dot_dw)(&sc, f->m, f->ml, f->m, f->ml);
+        /* C = |m|² − r²|a|² and D = r²|s|² − P², each as one compensated sum; r²|a|² is
+           kept as a double word for the root refinement. */
         for (i = 0; i < 3; i++) {
             CYL__R ra = f->r * f->a[i], ral = CYL__FMAR(f->r, f->a[i], -ra);
             CYL__R rs = f->r * f->s[i], rsl = CYL__FMAR(f->r, f->s[i], -rs);
-            CYL__P(acc_prod)(&sc, -ra, ra);
-            sc.lo -= 2 * ra * ral;
+            CYL__P(acc_prod)(&sc, ra, ra);
+            sc.lo += 2 * ra * ral;
             CYL__P(acc_prod)(&sd, rs, rs);
             sd.lo += 2 * rs * (rsl + f->r * f->sl[i]);
         }
+        f->R2 = sc.hi + sc.lo;
+        f->R2l = sc.lo - (f->R2 - sc.hi);
+        sc.hi = -sc.hi;
+        sc.lo = -sc.lo;
+        CYL__P(acc_dot_dw)(&sc, f->m, f->ml, f->m, f->ml);
         C = sc.hi + sc.lo;
         CYL__P(acc_prod)(&sd, -P, P);
         D = sd.hi + sd.lo;
@@ -762,16 +773,14 @@ CYL__INL void CYL__P(refine)(const CYL__P(frame) *f, CYL__R t, int upper, CYL__R
     sf.hi = sf.lo = 0;
     for (i = 0; i < 3; i++) {
         CYL__R p = t * f->s[i], pe = CYL__FMAR(t, f->s[i], -p), yh, ye, yl;
-        CYL__R ra = f->r * f->a[i], ral = CYL__FMAR(f->r, f->a[i], -ra);
         CYL__P(two_sum)(f->m[i], p, &yh, &ye);
         yl = ye + pe + f->ml[i] + t * f->sl[i];
         CYL__P(acc_prod)(&sf, yh, yh);
         sf.lo += 2 * yh * yl;
-        CYL__P(acc_prod)(&sf, -ra, ra);
-        sf.lo -= 2 * ra * ral;
         G += (yh + yl) * f->s[i];
     }
-    F = sf.hi + sf.lo;
+    CYL__P(acc_add)(&sf, -f->R2);
+    F = sf.hi + (sf.lo - f->R2l);
     if (!upper)
         dt = G > 0 ? (-G - sq) / f->A : (sq - G > 0 ? F / (sq - G) : 0);
     else
