@@ -106,6 +106,7 @@ def main():
     L.append(f"| machine | {cpu_model()}, {os.cpu_count()} logical cores, {platform.machine()}, "
              f"{platform.system()} {platform.release()} |")
     L.append(f"| compiler | gcc {R.get('compiler', '?')}, `{R.get('cflags', '?')}` (+ `-std=c99`) |")
+    L.append(f"| library | cylinder_isect.h at commit {os.environ.get('BENCH_LIB_REV') or '?'} |")
     L.append(f"| seed | {R['seed']} |")
     L.append(f"| cases | {R['n']} per family x caps on/off x precision; every variant runs the "
              f"same cases |")

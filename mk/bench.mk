@@ -12,6 +12,8 @@ BENCH_OPT    ?= -O2 -march=native
 BENCH_SEED   ?= 20261122
 BENCH_N      ?= 6000
 REPORT_VENV  := $(BUILD)/report-venv
+# Which cylinder_isect.h the report measured (shown in REPORT.md).
+BENCH_LIB_REV ?= $(shell git log -1 --format=%h -- cylinder_isect.h 2>/dev/null)$(shell git diff --quiet -- cylinder_isect.h 2>/dev/null || echo ' + uncommitted changes')
 MATPLOTLIB   := matplotlib==3.9.2
 
 $(BENCH_BUILD)/unity.o: $(UNITY_C) | unity
@@ -47,7 +49,7 @@ $(REPORT_VENV)/.installed:
 .PHONY: report
 report: deps $(BENCH_BUILD)/bench $(REPORT_VENV)/.installed
 	$(BENCH_BUILD)/bench --seed $(BENCH_SEED) --n $(BENCH_N) --json $(BENCH_BUILD)/results.json | tee $(BENCH_BUILD)/bench.txt
-	$(REPORT_VENV)/bin/python bench/report.py $(BENCH_BUILD)/results.json bench/REPORT.md bench/error_vs_time.png docs/accuracy.md
+	BENCH_LIB_REV="$(BENCH_LIB_REV)" $(REPORT_VENV)/bin/python bench/report.py $(BENCH_BUILD)/results.json bench/REPORT.md bench/error_vs_time.png docs/accuracy.md
 
 $(BENCH_BUILD)/probe: bench/probe.c $(BENCH_SRCS) $(BENCH_HDRS)
 	@mkdir -p $(@D)
