@@ -314,6 +314,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__PARA CYL_PARALLEL_TOLF
 #define CYL__RDIR 16.0f
 #define CYL__RLEN 65536.0f
+#define CYL__RCOARSE 4.656612873077393e-10f /* 2^-31 */
 #include CYL_HEADER_FILENAME
 #undef CYL__BODY
 #undef CYL__R
@@ -334,6 +335,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #undef CYL__PARA
 #undef CYL__RDIR
 #undef CYL__RLEN
+#undef CYL__RCOARSE
 #endif
 
 /* ---- double instance ---- */
@@ -357,6 +359,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__PARA CYL_PARALLEL_TOL
 #define CYL__RDIR 18446744073709551616.0
 #define CYL__RLEN 3.402823669209384634633746e38
+#define CYL__RCOARSE 1.1270725851789228e-131 /* 2^-435 */
 #include CYL_HEADER_FILENAME
 #undef CYL__BODY
 #undef CYL__R
@@ -377,6 +380,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #undef CYL__PARA
 #undef CYL__RDIR
 #undef CYL__RLEN
+#undef CYL__RCOARSE
 #endif
 
 #endif /* CYLINDER_ISECT_H */
@@ -571,10 +575,11 @@ CYL__INL int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
 
 CYL__INL int CYL__P(check)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
 {
+    int rc;
     if (!ray || !cyl) return CYL_E_NULL;
-    if (opts & ~(unsigned)CYL__SUPPORTED) return CYL_E_OPTION;
-    if (opts & CYL_TRUSTED) return 0;
-    return CYL__P(validate)(ray, cyl);
+    rc = (opts & CYL_TRUSTED) ? 0 : CYL__P(validate)(ray, cyl);
+    if (!rc && (opts & ~(unsigned)CYL__SUPPORTED)) rc = CYL_E_OPTION;
+    return rc;
 }
 
 /* ------------------------------------------------------------------ the solver */
@@ -593,6 +598,8 @@ typedef struct CYL__P(frame) {
     CYL__R R2l;           /* precise path: low part of r²|a|²                              */
     CYL__R ad, aw;        /* a·d, a·w                                                      */
     CYL__R awl, nal, adl; /* precise path: low parts of a·w, |a| and a·d                    */
+    CYL__R Hu;            /* h/2 in user units, rounded toward zero                        */
+    int coarse;           /* r² underflows in the frame: linear wall test, t_err = +inf     */
     int e;                /* user t = frame t · 2^e                                        */
     int el;               /* user length = frame length · 2^el                             */
     int precise;
@@ -646,6 +653,7 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
         f->r = rr;
         f->H = hh * CYL__C(0.5);
         f->e = f->el = 0;
+        f->coarse = 0;
     } else {
         CYL__R o[3], c[3], fa[2], fd[2], fl[2];
         int kl, kd, pre = 0;
@@ -683,7 +691,12 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
         f->H = hh * fl[0] * fl[1] * CYL__C(0.5);
         f->e = kl + pre - kd;
         f->el = kl + pre;
+        f->coarse = f->r < CYL__RCOARSE;
     }
+    /* h/2 for the reported v, never above the true half height (h/2 of an odd subnormal h
+       rounds up) */
+    f->Hu = cyl->h * CYL__C(0.5);
+    if (f->Hu + f->Hu > cyl->h) f->Hu = (cyl->h - CYL__MINR * 2 * CYL__U) * CYL__C(0.5);
     f->aa = CYL__P(dot)(f->a, f->a);
     f->na = CYL__SQRTR(f->aa);
 }
@@ -736,6 +749,24 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2], int *tan
         B = CYL__P(dot)(f->m, f->s);
         C = CYL__FMAR(-r2, f->aa, CYL__P(dot)(f->m, f->m));
         D = CYL__P(dop)(r2, f->A, P, P);
+    }
+    if (f->coarse) {
+        /* r is so small against |o − c| or h that r² underflows in the frame: compare ρ with r
+           linearly (|P| = ρ|s|), and form the half chord r·√e·|a|/|s| from the ratio ρ/r. */
+        CYL__R ns = CYL__SQRTR(f->A), rs = f->r * ns, x, e, hc, tc;
+        if (CYL__P(abs)(P) > rs) return 0;
+        x = rs > 0 ? CYL__P(abs)(P) / rs : 0;
+        e = (1 - x) * (1 + x);
+        *tangent = e <= CYL__TANG;
+        if (*tangent && (opts & CYL_NO_TANGENT)) return 0;
+        hc = f->r * CYL__SQRTR(e) * f->na / ns;
+        tc = -B / f->A;
+        f->sq = hc * f->A;
+        t[0] = tc - hc;
+        t[1] = tc + hc;
+        (void)C;
+        (void)D;
+        return 1;
     }
     band = CYL__TANG * r2 * f->A;
     if (D < -band) return 0;
@@ -848,7 +879,7 @@ CYL__INL int CYL__P(slab)(const CYL__P(frame) *f, CYL__R sl[2], int part[2])
         tl = (-hna - f->aw) / f->ad;
         th = (hna - f->aw) / f->ad;
     }
-    if (tl <= th) {
+    if (f->ad > 0) { /* by the direction, not by comparing: a thin disk can round tl == th */
         sl[0] = tl; part[0] = CYL_CAP_LOW;
         sl[1] = th; part[1] = CYL_CAP_HIGH;
     } else {
@@ -906,6 +937,7 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     }
     f->A = CYL__P(dot)(f->s, f->s);
     f->R2 = f->r * f->r * f->aa;
+    f->R2l = 0;
     if (!CYL__P(slab)(f, sl, sp)) return 0;
     /* sin²(angle) = A / (|a|²|d|²) */
     if (f->A <= CYL__PARA * CYL__PARA * f->aa * CYL__P(dot)(f->d, f->d)) {
@@ -1038,7 +1070,6 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *c, unsi
 #endif
         ys = CYL__P(dot)(y, f->s);
         v = CYL__FMAR(c->t, f->ad, f->aw) / f->na;
-        v = v > f->H ? f->H : (v < -f->H ? -f->H : v);
         if (!(opts & CYL_NO_NORMAL)) {
             /* y ⊥ a, so |y × a| = |y||a| has no cancellation: one FMA per component is enough
                for a normal accurate to a few u. */
@@ -1046,6 +1077,16 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *c, unsi
             no[1] = CYL__FMAR(y[2], f->a[0], -(y[0] * f->a[2]));
             no[2] = CYL__FMAR(y[0], f->a[1], -(y[1] * f->a[0]));
             len2 = CYL__P(dot)(no, no);
+            if (!(len2 >= CYL__RDIR * CYL__MINR) || !(len2 <= CYL__MAXR / CYL__RDIR)) {
+                /* y is tiny or huge (far origins, r far below |o − c|): bring the largest
+                   component near 1 exactly, so that |no|² neither underflows nor overflows */
+                CYL__R mx = CYL__P(amax3)(no), sc[2];
+                if (mx > 0) {
+                    CYL__P(pow2pair)(-CYL__P(ilogb)(mx), sc);
+                    for (i = 0; i < 3; i++) no[i] = no[i] * sc[0] * sc[1];
+                }
+                len2 = CYL__P(dot)(no, no);
+            }
             if (len2 > 0) {
                 CYL__R inv = 1 / CYL__SQRTR(len2);
                 for (i = 0; i < 3; i++) no[i] *= inv;
@@ -1056,11 +1097,11 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *c, unsi
                 len2 = CYL__P(dot)(no, no);
                 for (i = 0; i < 3; i++) no[i] /= CYL__SQRTR(len2);
             }
-            face = ys > 0 ? -1 : 1;
+            face = CYL__P(dot)(no, f->d) > 0 ? -1 : 1;
         }
     } else {
         CYL__R sgn = c->part == CYL_CAP_HIGH ? 1 : -1;
-        v = sgn * f->H;
+        v = 0; /* exactly ±h/2, set below */
         if (!(opts & CYL_NO_NORMAL)) {
             for (i = 0; i < 3; i++) no[i] = sgn * f->a[i] / f->na;
             face = sgn * f->ad > 0 ? -1 : 1;
@@ -1068,16 +1109,21 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *c, unsi
     }
     if (opts & CYL_OUTWARD) face = 1;
     for (i = 0; i < 3; i++) hit->n[i] = face * no[i];
-    hit->v = f->el ? CYL__P(scale)(v, f->el) : v;
+    v = f->el ? CYL__P(scale)(v, f->el) : v;
+    /* a wall hit inside the slab has |v| <= h/2 up to rounding: report it within */
+    hit->v = c->part == CYL_SIDE ? (v > f->Hu ? f->Hu : (v < -f->Hu ? -f->Hu : v))
+                                 : (c->part == CYL_CAP_HIGH ? f->Hu : -f->Hu);
     fs[0] = fs[1] = 1;
     if (f->e) CYL__P(pow2pair)(f->e, fs);
     if (opts & CYL_NO_ERRBOUND) {
         hit->t_err = CYL__MAXR * 2;
     } else {
         CYL__R te = CYL__P(bound)(f, c, y, ys) * fs[0] * fs[1];
-        /* a user t that landed among the subnormals rounded once more */
-        if (CYL__P(abs)(hit->t) < CYL__MINR) te += CYL__MINR * CYL__U;
-        hit->t_err = te;
+        const CYL__R tiny = CYL__MINR * 2 * CYL__U; /* the smallest subnormal */
+        /* the scaling back, or a user t among the subnormals, rounded once more */
+        if (te < CYL__MINR) te += tiny;
+        if (CYL__P(abs)(hit->t) < CYL__MINR) te += tiny;
+        hit->t_err = f->coarse ? CYL__MAXR * 2 : te;
     }
 }
 
