@@ -346,7 +346,9 @@ void ev_eval(const ev_variant *v, const ev_set *s, ev_stats *st)
                     if (u >= st->cond_ulp_max) st->cond_worst_index = i;
                 }
             }
-            if (!(v->opts & CYL_NO_NORMAL)) {
+            /* at a tangency the normal is perpendicular to d: which side "faces the ray" is
+               a coin toss, so normals are judged outside the band only */
+            if (!(v->opts & CYL_NO_NORMAL) && ref->margin > band) {
                 double sg = ((v->opts & CYL_OUTWARD) && (rh->flags & CYL_F_INSIDE)) ? -1.0 : 1.0;
                 double dx = o.n[0] - sg * rh->n[0], dy = o.n[1] - sg * rh->n[1],
                        dz = o.n[2] - sg * rh->n[2];

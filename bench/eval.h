@@ -52,7 +52,7 @@ typedef struct ev_stats {
     int cond_n;                 /* compared hits that are well-conditioned */
     double cond_ulp_max;        /* max ulps over those */
     int cond_worst_index;
-    double nrm_max;             /* max |n - n_exact| (about the angle in radians) */
+    double nrm_max;             /* max |n - n_exact| (about the angle), margin above the band */
     int terr_checked, terr_fail;            /* exact t outside [t - t_err, t + t_err] */
     int terr_fail_index;
     int all_miscls, all_miscls_out;   /* intersect_all: count, part or crossing differs */
