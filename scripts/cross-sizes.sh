@@ -75,5 +75,5 @@ if [ "$timing" = 1 ]; then
 fi
 
 [ "$write_doc" = 1 ] || { echo "sizes: $csv"; exit 0; }
-python3 scripts/cross-table.py "$csv" "$tcsv" embedded/configs.txt docs/embedded.md
+python3 scripts/cross-table.py "$csv" "$tcsv" embedded/configs.txt docs/embedded.md "$BUILD/bench/results.json"
 echo "sizes: $csv, tables written to docs/embedded.md"
