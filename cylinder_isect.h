@@ -937,7 +937,8 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     }
     f->A = CYL__P(dot)(f->s, f->s);
     f->R2 = f->r * f->r * f->aa;
-    f->R2l = 0;
+    f->R2l = f->sq = 0;
+    for (k = 0; k < 3; k++) f->m[k] = f->ml[k] = 0; /* set by the wall; zero for -O3's sake */
     if (!CYL__P(slab)(f, sl, sp)) return 0;
     /* sin²(angle) = A / (|a|²|d|²) */
     if (f->A <= CYL__PARA * CYL__PARA * f->aa * CYL__P(dot)(f->d, f->d)) {
@@ -1053,7 +1054,7 @@ CYL__INL CYL__R CYL__P(bound)(const CYL__P(frame) *f, const CYL__P(cand) *c,
 CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *c, unsigned opts,
                             CYL__N(hit) *hit)
 {
-    CYL__R no[3] = {0, 0, 0}, y[3], ys = 0, v, fs[2], face = 1;
+    CYL__R no[3] = {0, 0, 0}, y[3] = {0, 0, 0}, ys = 0, v, fs[2], face = 1;
     int i;
     hit->t = c->tu;
     hit->part = c->part;
