@@ -1,0 +1,43 @@
+# The Unity contract suite of cylinder_isect.h (issue 2).
+#   tests/test_float.c, tests/test_double.c  the contract (tests/core_tests.inc, written once),
+#   tests/test_api.c                         precision-independent API facts
+# become runners in every configuration of the root Makefile (gcc/clang -O0/-O2, g++ as C++11,
+# clang ASan+UBSan). This fragment adds the compile-configuration checks of tests/config:
+#   runners   CYL_NO_FLOAT, CYL_NO_DOUBLE, -DCYL_NO_PRECISE, user overrides (CYL_SQRTF/CYL_SQRT/
+#             CYL_FMAF/CYL_FMA/CYL_DEF and the tolerance macros), two translation units linked
+#             together; the last two also as C++11
+#   prereq    -ffast-math must stop the build at the header's #error (gcc and clang)
+# Build one runner alone: make build/gcc-O0/test_float && build/gcc-O0/test_float
+
+TESTS_CFG_DIR := $(BUILD)/tests-config
+
+# test_float and test_double include core_tests.inc, which the root TEST_DEPS does not list.
+$(filter %/test_float %/test_double,$(TEST_BINS)): tests/core_tests.inc
+
+TESTS_CFG_HDRS := cylinder_isect.h $(wildcard tests/config/*.h)
+
+# $(1) runner name, $(2) sources, $(3) extra flags, $(4) c or cxx
+define TESTS_CFG_RUNNER
+$(TESTS_CFG_DIR)/$(1): $(2) $(TESTS_CFG_HDRS) $(if $(filter cxx,$(4)),$(BUILD)/cxx/unity.o,$(BUILD)/gcc-O0/unity.o)
+	@mkdir -p $$(@D)
+	$(if $(filter cxx,$(4)),$(CXX_GCC) -x c++ $(WARN_CXX),$(GCC) $(WARN_C)) -O1 $(3) $(UNITY_FLAGS) -I. -Itests/config $(2) -x none $(if $(filter cxx,$(4)),$(BUILD)/cxx/unity.o,$(BUILD)/gcc-O0/unity.o) -lm -o $$@
+TESTS_CFG_RUNNERS += $(TESTS_CFG_DIR)/$(1)
+endef
+
+TESTS_CFG_RUNNERS :=
+$(eval $(call TESTS_CFG_RUNNER,no_float,tests/config/cfg_no_float.c,,c))
+$(eval $(call TESTS_CFG_RUNNER,no_double,tests/config/cfg_no_double.c,,c))
+$(eval $(call TESTS_CFG_RUNNER,no_precise,tests/config/cfg_no_precise.c,-DCYL_NO_PRECISE,c))
+$(eval $(call TESTS_CFG_RUNNER,overrides,tests/config/cfg_overrides.c tests/config/cfg_overrides_ext.c,,c))
+$(eval $(call TESTS_CFG_RUNNER,overrides_cxx,tests/config/cfg_overrides.c tests/config/cfg_overrides_ext.c,,cxx))
+$(eval $(call TESTS_CFG_RUNNER,two_tu,tests/config/cfg_two_tu_main.c tests/config/cfg_two_tu_other.c,,c))
+$(eval $(call TESTS_CFG_RUNNER,two_tu_cxx,tests/config/cfg_two_tu_main.c tests/config/cfg_two_tu_other.c,,cxx))
+
+$(TESTS_CFG_DIR)/fast_math.stamp: tests/config/cfg_fast_math.c tests/config/check-fast-math.sh cylinder_isect.h
+	@bash tests/config/check-fast-math.sh $@ $(GCC) $(CLANG)
+
+.PHONY: tests-config
+tests-config: $(TESTS_CFG_RUNNERS) $(TESTS_CFG_DIR)/fast_math.stamp
+
+RUNNERS      += $(TESTS_CFG_RUNNERS)
+TEST_PREREQS += $(TESTS_CFG_DIR)/fast_math.stamp
