@@ -16,6 +16,7 @@
 #define T_LDEXP ldexp
 #define T_BIG_EXP 400 /* lengths scaled by 2^+-400: squares stay finite only with prescaling */
 #define T_DIR_EXP 500 /* d and a scaled by 2^+-500 */
+#define T_MAX_EXP DBL_MAX_EXP
 #include "core_tests.inc"
 
 void setUp(void) {}

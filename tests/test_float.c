@@ -16,6 +16,7 @@
 #define T_LDEXP ldexpf
 #define T_BIG_EXP 50 /* lengths scaled by 2^+-50: squares stay finite only with prescaling */
 #define T_DIR_EXP 60 /* d and a scaled by 2^+-60 */
+#define T_MAX_EXP FLT_MAX_EXP
 #include "core_tests.inc"
 
 void setUp(void) {}
