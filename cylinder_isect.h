@@ -483,7 +483,6 @@ CYL__INL CYL__R CYL__P(adot)(const CYL__R x[3], const CYL__R y[3])
     return CYL__P(abs)(x[0] * y[0]) + CYL__P(abs)(x[1] * y[1]) + CYL__P(abs)(x[2] * y[2]);
 }
 
-#ifndef CYL_NO_PRECISE
 /* Error-free transformations (Knuth's TwoSum; TwoProd with FMA) and a compensated
    accumulator in the style of Ogita, Rump and Oishi's Sum2/Dot2: hi + lo carries the sum with
    error about u·|sum| + γ²·Σ|terms|. */
@@ -513,6 +512,17 @@ CYL__INL void CYL__P(acc_prod)(CYL__P(acc) *s, CYL__R x, CYL__R y)
 
 /* z = x × (yh + yl) as a double word zh + zl (x exact): each component's two products are
    split exactly, so zh + zl is accurate to O(u²) relative. */
+/* x·y as if computed in twice the precision, then rounded (Ogita, Rump, Oishi's Dot2). */
+CYL__INL CYL__R CYL__P(dot2)(const CYL__R x[3], const CYL__R y[3])
+{
+    CYL__P(acc) s;
+    s.hi = x[0] * y[0];
+    s.lo = CYL__FMAR(x[0], y[0], -s.hi);
+    CYL__P(acc_prod)(&s, x[1], y[1]);
+    CYL__P(acc_prod)(&s, x[2], y[2]);
+    return s.hi + s.lo;
+}
+
 /* One component x_k (yh + yl)_l − x_l (yh + yl)_k as hi + lo. */
 CYL__INL void CYL__P(dop_dw)(CYL__R xk, CYL__R xl, CYL__R yhl, CYL__R yhk, CYL__R yll,
                             CYL__R ylk, CYL__R *zh, CYL__R *zl)
@@ -553,7 +563,6 @@ CYL__INL void CYL__P(acc_dot_dw)(CYL__P(acc) *s, const CYL__R xh[3], const CYL__
     s->lo += (xh[0] * yl[0] + xl[0] * yh[0]) + (xh[1] * yl[1] + xl[1] * yh[1]) +
              (xh[2] * yl[2] + xl[2] * yh[2]);
 }
-#endif
 
 /* ------------------------------------------------------------------ validation */
 
@@ -631,21 +640,14 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
     (void)opts;
     f->precise = 0;
 #endif
-    for (i = 0; i < 3; i++) {
-#ifndef CYL_NO_PRECISE
-        if (f->precise)
-            CYL__P(two_sum)(ray->o[i], -cyl->c[i], &f->w[i], &f->wl[i]);
-        else
-#endif
-        {
-            f->w[i] = ray->o[i] - cyl->c[i];
-            f->wl[i] = 0;
-        }
-    }
+    /* w = o − c exactly, as w + wl (TwoSum): its rounding would otherwise be the largest
+       error left for origins far from the axis */
+    for (i = 0; i < 3; i++) CYL__P(two_sum)(ray->o[i], -cyl->c[i], &f->w[i], &f->wl[i]);
+    /* the wall is quadratic in |o − c| and r, the caps only linear in h: the scale follows the
+       first two, so that a very long tube does not crush r and o − c toward underflow */
     L = CYL__P(max)(CYL__P(amax3)(f->w), rr);
-    if (hfin) L = CYL__P(max)(L, hh);
     if (ma >= 1 / rdir && ma <= rdir && md >= 1 / rdir && md <= rdir && L <= rlen &&
-        rr >= 1 / rlen && (!hfin || hh >= 1 / rlen)) {
+        rr >= 1 / rlen && (!hfin || (hh >= 1 / rlen && hh <= rlen))) {
         for (i = 0; i < 3; i++) {
             f->a[i] = cyl->a[i];
             f->d[i] = ray->d[i];
@@ -665,19 +667,13 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
             rr *= CYL__C(0.5);
             hh *= CYL__C(0.5);
             pre = 1;
-            for (i = 0; i < 3; i++) {
-#ifndef CYL_NO_PRECISE
-                if (f->precise)
-                    CYL__P(two_sum)(o[i], -c[i], &f->w[i], &f->wl[i]);
-                else
-#endif
-                    f->w[i] = o[i] - c[i];
-            }
+            for (i = 0; i < 3; i++) CYL__P(two_sum)(o[i], -c[i], &f->w[i], &f->wl[i]);
             L = CYL__P(max)(CYL__P(amax3)(f->w), rr);
-            if (hfin) L = CYL__P(max)(L, hh);
         }
         kd = CYL__P(ilogb)(md);
         kl = CYL__P(ilogb)(L);
+        /* ... unless h is so much longer that h/2 would overflow in the frame */
+        if (hfin && CYL__P(ilogb)(hh) - kl > CYL__EBIAS - 4) kl = CYL__P(ilogb)(hh) - (CYL__EBIAS - 4);
         CYL__P(pow2pair)(-CYL__P(ilogb)(ma), fa);
         CYL__P(pow2pair)(-kd, fd);
         CYL__P(pow2pair)(-kl, fl);
@@ -744,11 +740,21 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2], int *tan
     } else
 #endif
     {
-        CYL__P(cross)(f->a, f->w, f->m);
-        P = CYL__P(dot)(f->w, f->s);
+        /* m as a double word from the exact w + wl, P compensated, r²|a|² as a double word:
+           what the root correction in finish needs for a residual exact to O(u²) */
+        CYL__R zero[3] = {0, 0, 0}, r2l = CYL__FMAR(f->r, f->r, -r2), aal, p;
+        CYL__P(acc) sa;
+        CYL__P(cross_dw)(f->a, f->w, f->wl, f->m, f->ml);
+        P = CYL__P(dot2)(f->w, f->s) + (CYL__P(dot)(f->w, f->sl) + CYL__P(dot)(f->wl, f->s));
         B = CYL__P(dot)(f->m, f->s);
         C = CYL__FMAR(-r2, f->aa, CYL__P(dot)(f->m, f->m));
-        D = CYL__P(dop)(r2, f->A, P, P);
+        D = CYL__P(dop)(r2, f->A, P, P) + r2l * f->A;
+        sa.hi = sa.lo = 0;
+        CYL__P(acc_dot_dw)(&sa, f->a, zero, f->a, zero);
+        aal = sa.lo - (f->aa - sa.hi);
+        p = r2 * f->aa;
+        f->R2 = p;
+        f->R2l = CYL__FMAR(r2, f->aa, -p) + r2 * aal + r2l * f->aa;
     }
     if (f->coarse) {
         /* r is so small against |o − c| or h that r² underflows in the frame: compare ρ with r
@@ -786,8 +792,7 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2], int *tan
     return 1;
 }
 
-#ifndef CYL_NO_PRECISE
-/* CYL_PRECISE: one exact-quadratic correction of a wall root. With F = f(t) evaluated in
+/* One exact-quadratic correction of a wall root (both paths). With F = f(t) evaluated in
    compensated arithmetic and G = s·(m + t s) (= f'(t)/2), the roots of
    f(t + δ) = F + 2Gδ + Aδ² are δ = (−G ∓ √(G² − AF))/A, and G² − AF = |a|²D is the
    discriminant the solver already has (it does not depend on the shift). Each root is taken in
@@ -839,7 +844,6 @@ CYL__INL int CYL__P(side)(const CYL__P(frame) *f, CYL__R t, CYL__R tl)
     if (hi.hi + hi.lo > 0) return f->ad > 0 ? 1 : -1;
     return 0;
 }
-#endif
 
 /* The slab between the cap planes v = −H and v = +H along the ray: [sl[0], sl[1]] with the cap
    part of each end. Returns 0 when the ray runs beside the slab (a·d == 0 outside it). */
@@ -859,10 +863,9 @@ CYL__INL int CYL__P(slab)(const CYL__P(frame) *f, CYL__R sl[2], int part[2])
         part[0] = part[1] = CYL_SIDE;
         return CYL__P(abs)(f->aw) <= hna;
     }
-#ifndef CYL_NO_PRECISE
-    if (f->precise) {
-        /* ±H|a| − a·w cancels for an origin near a cap plane: form it from the double-word
-           |a| and a·w, so the only rounding left is the final division's. */
+    {
+        /* ±H|a| − a·w from the double-word |a| and a·w: the only rounding left is the
+           final division's. */
         CYL__P(acc) lo, hi;
         lo.hi = lo.lo = 0;
         CYL__P(acc_prod)(&lo, -f->H, f->na);
@@ -873,11 +876,6 @@ CYL__INL int CYL__P(slab)(const CYL__P(frame) *f, CYL__R sl[2], int part[2])
         CYL__P(acc_add)(&hi, -f->aw);
         tl = CYL__P(div_dw)(lo.hi, lo.lo, f->ad, f->adl);
         th = CYL__P(div_dw)(hi.hi, hi.lo, f->ad, f->adl);
-    } else
-#endif
-    {
-        tl = (-hna - f->aw) / f->ad;
-        th = (hna - f->aw) / f->ad;
     }
     if (f->ad > 0) { /* by the direction, not by comparing: a thin disk can round tl == th */
         sl[0] = tl; part[0] = CYL_CAP_LOW;
@@ -909,28 +907,29 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     int sp[2], n = 0, k, kept = 0, tangent = 0;
     int caps = (opts & CYL_CAPS) != 0;
     CYL__P(prepare)(ray, cyl, opts, f);
-#ifndef CYL_NO_PRECISE
-    if (f->precise) {
-        CYL__P(acc) s1, s2;
+    {
+        /* s = a × d as a double word on every path: its low part makes P = w·s and the
+           residual of the root correction exact to O(u²) */
         CYL__R zero[3] = {0, 0, 0};
         CYL__P(cross_dw)(f->a, f->d, zero, f->s, f->sl);
-        s1.hi = s1.lo = s2.hi = s2.lo = 0;
+    }
+    if (f->H <= CYL__MAXR) {
+        /* The cap planes' t = (∓H|a| − a·w)/(a·d) cancels twice: a·d for rays across the
+           axis, and the numerator for origins near a cap plane. a·d, a·w and |a| are
+           therefore carried as double words (Dot2; |a| with one correction of the square
+           root), on every path: caps are the part of the default path they make accurate. */
+        CYL__P(acc) s1, s2, s3;
+        CYL__R zero[3] = {0, 0, 0};
+        s1.hi = s1.lo = s2.hi = s2.lo = s3.hi = s3.lo = 0;
         CYL__P(acc_dot_dw)(&s1, f->a, zero, f->d, zero);
         f->ad = s1.hi + s1.lo;
         f->adl = s1.lo - (f->ad - s1.hi);
         CYL__P(acc_dot_dw)(&s2, f->a, zero, f->w, f->wl);
         f->aw = s2.hi + s2.lo;
         f->awl = s2.lo - (f->aw - s2.hi);
-        /* |a| as a double word: na + nal with nal = (aa − na²)/(2 na) from the exact aa */
-        s1.hi = s1.lo = 0;
-        CYL__P(acc_dot_dw)(&s1, f->a, zero, f->a, zero);
-        f->nal = (CYL__FMAR(-f->na, f->na, s1.hi) + s1.lo) / (2 * f->na);
-    } else
-#endif
-    {
-        int i;
-        CYL__P(cross)(f->a, f->d, f->s);
-        for (i = 0; i < 3; i++) f->sl[i] = f->ml[i] = 0;
+        CYL__P(acc_dot_dw)(&s3, f->a, zero, f->a, zero);
+        f->nal = (CYL__FMAR(-f->na, f->na, s3.hi) + s3.lo) / (2 * f->na);
+    } else {
         f->ad = CYL__P(dot)(f->a, f->d);
         f->aw = CYL__P(dot)(f->a, f->w);
         f->awl = f->nal = f->adl = 0;
@@ -1019,7 +1018,7 @@ CYL__INL CYL__R CYL__P(bound)(const CYL__P(frame) *f, const CYL__P(cand) *c,
     /* |exact w − w| componentwise: u|w| for the one rounding of o − c, or |wl| when w + wl
        is exact; the absolute term covers a component that the scaling made subnormal.
        Norms (∞ and 1) instead of componentwise terms: at most 3 times looser, much cheaper. */
-    werr = (f->precise ? CYL__P(amax3)(f->wl) : u * CYL__P(amax3)(f->w)) + CYL__MINR;
+    werr = CYL__P(amax3)(f->wl) + CYL__MINR;
     if (c->part == CYL_SIDE) {
         CYL__R ym = CYL__P(amax3)(y), y1 = CYL__P(asum3)(y), s1 = CYL__P(asum3)(f->s);
         CYL__R ey, g, E, F, Eb, bb, Alo;
@@ -1051,11 +1050,24 @@ CYL__INL CYL__R CYL__P(bound)(const CYL__P(frame) *f, const CYL__P(cand) *c,
     return d * safe;
 }
 
-CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *c, unsigned opts,
-                            CYL__N(hit) *hit)
+CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, unsigned opts,
+                            const CYL__N(ray) *ray, CYL__N(hit) *hit)
 {
     CYL__R no[3] = {0, 0, 0}, y[3] = {0, 0, 0}, ys = 0, v, fs[2], face = 1;
+    CYL__P(cand) cc = *cin, *c = &cc;
     int i;
+    if (!f->precise && !f->coarse && c->part == CYL_SIDE && !(c->flags & CYL_F_TANGENT)) {
+        /* default path: one correction of the returned root with the compensated residual
+           (the precise path corrected both in the solver, to decide the rim); the step is a
+           few ulps, so keep it inside the accepted range */
+        CYL__R lo;
+        CYL__P(refine)(f, c->t, (c->flags & CYL_F_INSIDE) != 0, &c->t, &lo);
+        c->tu = f->e ? CYL__P(scale)(c->t, f->e) : c->t;
+        if (c->tu < ray->tmin || c->tu > ray->tmax) {
+            c->tu = c->tu < ray->tmin ? ray->tmin : ray->tmax;
+            c->t = f->e ? CYL__P(scale)(c->tu, -f->e) : c->tu;
+        }
+    }
     hit->t = c->tu;
     hit->part = c->part;
     hit->flags = c->flags;
@@ -1098,6 +1110,20 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *c, unsi
                 len2 = CYL__P(dot)(no, no);
                 for (i = 0; i < 3; i++) no[i] /= CYL__SQRTR(len2);
             }
+            if (f->coarse) { /* y is mostly rounding there: at least keep n ⊥ a */
+                CYL__R k = CYL__P(dot)(no, f->a) / f->aa, len;
+                for (i = 0; i < 3; i++) no[i] -= k * f->a[i];
+                len = CYL__SQRTR(CYL__P(dot)(no, no));
+                if (len > 0) {
+                    for (i = 0; i < 3; i++) no[i] /= len;
+                } else {
+                    CYL__R z[3] = {0, 0, 0};
+                    z[CYL__P(abs)(f->a[0]) <= CYL__P(abs)(f->a[1]) ? 0 : 1] = 1;
+                    CYL__P(cross)(z, f->a, no);
+                    len = CYL__SQRTR(CYL__P(dot)(no, no));
+                    for (i = 0; i < 3; i++) no[i] /= len;
+                }
+            }
             face = CYL__P(dot)(no, f->d) > 0 ? -1 : 1;
         }
     } else {
@@ -1138,7 +1164,7 @@ CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
     int rc = hit ? CYL__P(check)(ray, cyl, opts) : CYL_E_NULL;
     if (rc) return rc;
     if (!CYL__P(solve)(ray, cyl, opts, &f, c)) return CYL_MISS;
-    CYL__P(finish)(&f, &c[0], opts, hit);
+    CYL__P(finish)(&f, &c[0], opts, ray, hit);
     return CYL_HIT;
 }
 
@@ -1150,7 +1176,11 @@ CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder)
     int k, n, rc = hits ? CYL__P(check)(ray, cyl, opts) : CYL_E_NULL;
     if (rc) return rc;
     n = CYL__P(solve)(ray, cyl, opts, &f, c);
-    for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, &hits[k]);
+    for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, ray, &hits[k]);
+    if (n == 2 && hits[1].t < hits[0].t) { /* the correction kept two near roots ordered */
+        hits[1].t_err += hits[0].t - hits[1].t;
+        hits[1].t = hits[0].t;
+    }
     return n;
 }
 
