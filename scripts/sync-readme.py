@@ -1,0 +1,27 @@
+#!/usr/bin/env python3
+"""Copy generated blocks into README.md so that its figures are the ones the commands wrote.
+
+usage: sync-readme.py README.md NAME=SOURCE [NAME=SOURCE ...]
+For each NAME, the lines between '<!-- NAME:begin' and '<!-- NAME:end' in SOURCE replace the
+lines between the same markers in README.md. A marker missing on either side is an error."""
+import re
+import sys
+
+
+def block(lines, name, path):
+    b = [i for i, l in enumerate(lines) if l.startswith(f"<!-- {name}:begin")]
+    e = [i for i, l in enumerate(lines) if l.startswith(f"<!-- {name}:end")]
+    if len(b) != 1 or len(e) != 1 or e[0] < b[0]:
+        sys.exit(f"sync-readme: markers '{name}' not found once in {path}")
+    return b[0], e[0]
+
+
+readme = sys.argv[1]
+lines = open(readme, encoding="utf-8").read().split("\n")
+for arg in sys.argv[2:]:
+    name, src = arg.split("=", 1)
+    slines = open(src, encoding="utf-8").read().split("\n")
+    sb, se = block(slines, name, src)
+    rb, re_ = block(lines, name, readme)
+    lines = lines[: rb + 1] + slines[sb + 1 : se] + lines[re_:]
+open(readme, "w", encoding="utf-8").write("\n".join(lines))
