@@ -49,4 +49,5 @@ done
 if ! xargs -P 2 -d '\n' -n 1 bash -c <"$jobs" >"$build/cross/build.log" 2>&1; then
   cat "$build/cross/build.log" >&2; echo "cross-test: a test does not build" >&2; exit 1
 fi
+rm -rf "$build/results/cross"
 exec bash scripts/run-tests.sh "$build/results/cross" "${runners[@]}"
