@@ -73,9 +73,10 @@
      CYL_CAPS          solid capped cylinder instead of the open tube
      CYL_OUTWARD       outward normal instead of the ray-facing one
      CYL_NO_TANGENT    grazing contacts within the tangent tolerance are misses
-     CYL_PRECISE       precise tier: error-free transformations (TwoSum, FMA TwoProd,
-                       compensated dot products) for o − c, the cross products and the
-                       coefficients, and one compensated Newton step on each wall root
+     CYL_PRECISE       precise tier: every coefficient of the wall (P, B, C, D) as a
+                       compensated sum, both wall roots corrected, and the rim decided from
+                       the axial coordinate of the corrected root: classification is right
+                       wherever its margin exceeds the tolerances, far origins included
      CYL_NO_NORMAL     skip the normal: hit.n = {0, 0, 0}
      CYL_NO_ERRBOUND   skip the bound: hit.t_err = +INFINITY
      CYL_TRUSTED       skip input validation (NULL and option checks remain): the caller
@@ -106,40 +107,47 @@
      CYL_PARALLEL_TOLF     2^-24 = u (float)            parallel bound on sin(angle)
      CYL_PARALLEL_TOL      2^-53 = u (double)
      CYL_HEADER_FILENAME   "cylinder_isect.h"           how this file includes itself
-   Why these tolerances. Tangent: the default path computes e with an absolute error below
-   (8 + 8·|w⊥|/r)·u (w = o − c; see the error analysis at cyl__solve), so 256u = 2^-(p−8)
-   classifies every contact whose |e| exceeds it correctly for origins within about 30 radii,
-   and it is the band inside which the tests accept either answer. Parallel: below sin = u a
+   Why these tolerances. Tangent: the default path computes e with an absolute error of a
+   few u times (1 + |o − c|/r) (see the error analysis at the wall solver), so 256u =
+   2^-(p−8) classifies every contact whose |e| exceeds it correctly for origins within tens
+   of radii (everywhere on CYL_PRECISE), and it is the band inside which the tests accept
+   either answer. Parallel: below sin = u a
    half-ulp change of one component of d makes it exactly parallel: the wall crossing is not
    a function of the data any more.
 
    NUMERICAL NOTES
    ===============
    u = 2^-24 (float), 2^-53 (double). The method, with a source for each step:
-     1. Exact power-of-two prescaling of a, d, and of the lengths (o − c, r, h), so nothing
-        overflows or underflows for finite inputs whose answer is representable; a scene scaled
-        by 2^k gives bit-identical t/2^k... results (tests check 2^±50 float, 2^±400 double).
-     2. Cross products s = a × d, m = a × (o − c) with Kahan's difference of products (relative
-        error <= 2u per component: Jeannerod, Louvet, Muller, Math. Comp. 82, 2013), never
-        projections: no cancellation for rays near the axis direction.
-     3. Geometric discriminant B² − AC = |a|²(r²|s|² − P²), P = (o − c)·s (Ray Tracing Gems,
-        ch. 7; pbrt-v4 cylinders): no difference of large squares when the origin is far.
-     4. Stable root pairing q = −(B + sgn(B)√Δ), t = q/A and C/q (Numerical Recipes §5.6).
+     1. Exact power-of-two prescaling (from the exponent bits, no libm) of a, d and the lengths
+        o − c, r when they are outside a safe range, so nothing overflows or underflows for
+        finite inputs whose answer is representable; arithmetic is equivariant under it, so a
+        scene scaled by 2^k gives the same bits (tests check 2^±50 float, 2^±400 double).
+     2. o − c exactly as a double word (Knuth's TwoSum); cross products s = a × d and
+        m = a × (o − c) as double words from FMA TwoProducts (never projections: no
+        cancellation for rays near the axis direction or origins far along it).
+     3. Geometric discriminant B² − AC = |a|²·D, D = r²|s|² − P², P = (o − c)·s (Ray Tracing
+        Gems, ch. 7; pbrt-v4 cylinders), with P compensated (Ogita, Rump, Oishi, "Accurate sum
+        and dot product", SIAM J. Sci. Comput. 26, 2005): no difference of large squares when
+        the origin is far.
+     4. Stable root pairing q = −(B + sgn(B)√Δ), t = q/A and C/q (Numerical Recipes §5.6),
+        then one exact-quadratic correction of the returned root, δ from f(t + δ) = 0 with
+        the residual f(t) = |m + t s|² − r²|a|² summed in compensated arithmetic.
      5. Caps by clipping the wall interval with the slab between the cap planes (Cychosz and
-        Waggenspack, Graphics Gems IV): watertight at the rim.
-     6. t_err: the residual f(t) = |a × (x(t) − c)|² − r²|a|² (= |a|²|s|²(t − t1)(t − t2)) is
-        evaluated at the returned t with a componentwise bound on its rounding error (standard
-        model, Higham, "Accuracy and Stability of Numerical Algorithms", ch. 3), and the root
-        nearest t is bounded by min(2F/|f'|, √(F/A)), F = |f| + its error bound. Near tangency
-        this is the inherent √ term. Caps: the same with the plane's linear residual.
-     7. CYL_PRECISE: TwoSum for o − c, FMA TwoProd for the cross products, compensated dot
-        products for P, B and C (Ogita, Rump, Oishi, SIAM J. Sci. Comput. 26, 2005), then one
-        Newton step on each wall root with the residual evaluated the same way.
-   Measured accuracy against an exact MPFR reference: see bench/REPORT.md (`make report`);
-   the tests assert the targets on a fixed-seed sample.
+        Waggenspack, Graphics Gems IV): watertight at the rim. The plane crossings
+        (∓H|a| − a·w)/(a·d) use double-word a·d, a·w and |a|, since both cancel.
+     6. t_err: the residual f is evaluated at the returned t with a bound on its rounding
+        error (standard model, Higham, "Accuracy and Stability of Numerical Algorithms",
+        ch. 3), and the root nearest t of the exact quadratic f(t + δ) = f + f'δ + Aδ² is
+        bounded by min(2F/|f'|, √(F/A)), F = |f| + its error bound. Near tangency this is the
+        inherent √ term. Caps: the same with the plane's linear residual.
+     7. CYL_PRECISE: B, C and D compensated too; both roots corrected before the rim is
+        decided from the sign of a compensated a·x(t) ± H|a|.
+   Measured against the exact MPFR reference of ref/ on ten case families (`make report`,
+   bench/REPORT.md; `make test` asserts the targets on a fixed-seed sample): t_err contained
+   the exact t in every hit; see bench/REPORT.md for ulps per family and the timing ratios.
    Conditioning: near tangency a relative input change ε moves t by about √ε·r/(|d|·sin);
-   for an origin at distance |w| from the axis, the rounding of o − c alone (u·|w|) decides
-   hit or miss once |w| > r/u on the default path; CYL_PRECISE removes that term.
+   on the default path the rounding of D (about u·|o − c|/r relative to e) decides hit or
+   miss for origins beyond about 1/(256u) radii; CYL_PRECISE removes that term.
 
    WHAT IT DOES NOT DO
    ===================
@@ -701,11 +709,13 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
    solve f(t) = |m + t·s|² − r²|a|² = A t² + 2B t + C = 0 with s = a × d, m = a × w,
    A = |s|², B = m·s, C = |m|² − r²|a|². Its discriminant B² − AC = |a|²·D with
    D = r²A − P², P = w·s (Lagrange: |m × s| = |a|·|w·s|), and D = r²A·e with e = 1 − ρ²/r².
-   Error analysis of e on the default path: s and m carry 2u per component, P = w·s carries
-   u|w||s| from the rounding of w plus 4u|w||s| from s and the dot, so |ê − e| <=
-   8u(1 + |w⊥|/r) for an origin near the axis plane, which is what CYL_TANGENT_TOL is set
-   against. Returns 0 (no crossing), or 1 with t[0] <= t[1] and *tangent set. */
-CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2], int *tangent)
+   Error analysis of e = D/(r²A) on the default path: w and s are exact to O(u²), P = w·s is
+   a compensated dot (error u|P| + O(u²)|w||s|), r² is split exactly, A = |s|² carries 3u; so
+   |ê − e| <= about 8u + O(u²)|w|²/r², which is what CYL_TANGENT_TOL is set against; the
+   precise path also compensates A and P². Returns 0 (no crossing), or 1 with t[0] <= t[1]
+   and *tangent set. */
+CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2],
+                         int *tangent)
 {
     CYL__R P, D, B, C, sq, q, band, r2 = f->r * f->r;
     int clamped = 0;
@@ -742,19 +752,24 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2], int *tan
     {
         /* m as a double word from the exact w + wl, P compensated, r²|a|² as a double word:
            what the root correction in finish needs for a residual exact to O(u²) */
-        CYL__R zero[3] = {0, 0, 0}, r2l = CYL__FMAR(f->r, f->r, -r2), aal, p;
-        CYL__P(acc) sa;
-        CYL__P(cross_dw)(f->a, f->w, f->wl, f->m, f->ml);
+        CYL__R r2l = CYL__FMAR(f->r, f->r, -r2);
+        if (full) {
+            CYL__R zero[3] = {0, 0, 0}, aal, p;
+            CYL__P(acc) sa;
+            CYL__P(cross_dw)(f->a, f->w, f->wl, f->m, f->ml);
+            sa.hi = sa.lo = 0;
+            CYL__P(acc_dot_dw)(&sa, f->a, zero, f->a, zero);
+            aal = sa.lo - (f->aa - sa.hi);
+            p = r2 * f->aa;
+            f->R2 = p;
+            f->R2l = CYL__FMAR(r2, f->aa, -p) + r2 * aal + r2l * f->aa;
+        } else { /* a shadow ray needs the roots, not their correction */
+            CYL__P(cross)(f->a, f->w, f->m);
+        }
         P = CYL__P(dot2)(f->w, f->s) + (CYL__P(dot)(f->w, f->sl) + CYL__P(dot)(f->wl, f->s));
         B = CYL__P(dot)(f->m, f->s);
         C = CYL__FMAR(-r2, f->aa, CYL__P(dot)(f->m, f->m));
         D = CYL__P(dop)(r2, f->A, P, P) + r2l * f->A;
-        sa.hi = sa.lo = 0;
-        CYL__P(acc_dot_dw)(&sa, f->a, zero, f->a, zero);
-        aal = sa.lo - (f->aa - sa.hi);
-        p = r2 * f->aa;
-        f->R2 = p;
-        f->R2l = CYL__FMAR(r2, f->aa, -p) + r2 * aal + r2l * f->aa;
     }
     if (f->coarse) {
         /* r is so small against |o − c| or h that r² underflows in the frame: compare ρ with r
@@ -899,8 +914,9 @@ CYL__INL int CYL__P(in_disk)(const CYL__P(frame) *f, CYL__R t)
 }
 
 /* All crossings of the chosen surface (at most 2), sorted, then those in [tmin, tmax]. */
+/* full = 0 (occluded): only the classification is needed, not what corrects the roots. */
 CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
-                          CYL__P(frame) *f, CYL__P(cand) out[2])
+                          int full, CYL__P(frame) *f, CYL__P(cand) out[2])
 {
     CYL__P(cand) c[2];
     CYL__R sl[2], tw[2], fs[2];
@@ -950,7 +966,7 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
                     n++;
                 }
         }
-    } else if (CYL__P(wall)(f, opts, tw, &tangent)) {
+    } else if (CYL__P(wall)(f, opts, full, tw, &tangent)) {
         unsigned tf = tangent ? CYL_F_TANGENT : 0u;
         int pos[2]; /* each wall root: -1 before the slab, 0 in it (inclusive), +1 after */
 #ifndef CYL_NO_PRECISE
@@ -1075,12 +1091,8 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, un
         CYL__R len2;
         /* y = a × x(t) = m + t·s, from the accurate m and s: no term as large as the axial
            coordinate enters, so long tubes keep accurate normals. The outward normal is
-           y × a normalised, and its sign against d is that of y·s. */
-        for (i = 0; i < 3; i++) y[i] = CYL__FMAR(c->t, f->s[i], f->m[i]);
-#ifndef CYL_NO_PRECISE
-        if (f->precise)
-            for (i = 0; i < 3; i++) y[i] += f->ml[i] + c->t * f->sl[i];
-#endif
+           y × a normalised. */
+        for (i = 0; i < 3; i++) y[i] = CYL__FMAR(c->t, f->s[i], f->m[i]) + (f->ml[i] + c->t * f->sl[i]);
         ys = CYL__P(dot)(y, f->s);
         v = CYL__FMAR(c->t, f->ad, f->aw) / f->na;
         if (!(opts & CYL_NO_NORMAL)) {
@@ -1163,7 +1175,7 @@ CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
     CYL__P(cand) c[2];
     int rc = hit ? CYL__P(check)(ray, cyl, opts) : CYL_E_NULL;
     if (rc) return rc;
-    if (!CYL__P(solve)(ray, cyl, opts, &f, c)) return CYL_MISS;
+    if (!CYL__P(solve)(ray, cyl, opts, 1, &f, c)) return CYL_MISS;
     CYL__P(finish)(&f, &c[0], opts, ray, hit);
     return CYL_HIT;
 }
@@ -1175,7 +1187,7 @@ CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder)
     CYL__P(cand) c[2];
     int k, n, rc = hits ? CYL__P(check)(ray, cyl, opts) : CYL_E_NULL;
     if (rc) return rc;
-    n = CYL__P(solve)(ray, cyl, opts, &f, c);
+    n = CYL__P(solve)(ray, cyl, opts, 1, &f, c);
     for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, ray, &hits[k]);
     if (n == 2 && hits[1].t < hits[0].t) { /* the correction kept two near roots ordered */
         hits[1].t_err += hits[0].t - hits[1].t;
@@ -1190,7 +1202,7 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
     CYL__P(cand) c[2];
     int rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
-    return CYL__P(solve)(ray, cyl, opts, &f, c) > 0;
+    return CYL__P(solve)(ray, cyl, opts, 0, &f, c) > 0;
 }
 
 /* The cylinder from p0 (its low cap center) to p1 (high cap center). c, a and h are rounded
