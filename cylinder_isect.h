@@ -9,12 +9,14 @@
    ===========
        #include "cylinder_isect.h"
 
-       cylf_ray ray = {{0, -5, 0}, {0, 1, 0}, 0.0f, INFINITY};        // o, d, tmin, tmax
-       cylf_cylinder cyl = {{0, 0, 0}, {0, 0, 1}, 1.0f, 2.0f};        // c, a, r, h
-       cylf_hit hit;
-       int rc = cylf_intersect(&ray, &cyl, CYL_CAPS, &hit);
-       if (rc == CYL_HIT)      printf("t=%g +- %g\n", hit.t, hit.t_err);   // t=4 +- 4.8e-07
-       else if (rc < 0)        printf("error: %s\n", cyl_strerror(rc));
+       cyld_ray ray = {{-5, 0.5, 0.25}, {1, 0, 0}, 0, 100};   // origin o, direction d, tmin, tmax
+       cyld_cylinder cyl = {{0, 0, 0}, {0, 0, 1}, 1, 2};      // center c, axis a, radius r, height h
+       cyld_hit hit;
+       int rc = cyld_intersect(&ray, &cyl, CYL_CAPS, &hit);   // nearest hit of the capped solid
+       if (rc == CYL_HIT)
+           printf("t = %.17g +- %.2g\n", hit.t, hit.t_err);  // t = 4.1339745962155616 +- 8.3e-15
+       else if (rc < 0)
+           printf("error: %s\n", cyl_strerror(rc));
 
    Drop the file anywhere; there is no implementation macro: every function is `static inline`
    (see CYL_DEF). The float API is cylf_*, the double API cyld_*; both come from one body below
