@@ -232,6 +232,14 @@ int main(int argc, char **argv)
         put(dir, ns == 1 ? "null-ray" : ns == 2 ? "null-cyl" : "null-hit", &in);
       }
       in.nullsel = 0;
+      if (func == 0) { /* from_segment with a NULL end (p0, then p1) */
+        fz_input sg = in;
+        sg.func = 3;
+        sg.nullsel = 1;
+        put(dir, "null-seg-p0", &sg);
+        sg.nullsel = 2;
+        put(dir, "null-seg-p1", &sg);
+      }
       in.opts = 0x80;
       put(dir, "unknown-opt-7", &in);
       in.opts = 0x80000000u | CYL_CAPS;

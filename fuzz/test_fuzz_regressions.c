@@ -54,91 +54,144 @@ static void replay_finding(const char *name, int status)
   if (status == OPEN) printf("NOTE: open finding %s now passes: mark it FIXED and add it to fuzz/corpus/\n", name);
 }
 
-/* Finding 1. Unknown option bit together with an invalid input (d = 0): the library answers
+/* Finding 1 (fixed by 4e17ce6). Unknown option bit together with an invalid input (d = 0): the library answers
  * CYL_E_OPTION, the contract's order says CYL_E_ZERO_DIR (option bits are checked last). */
 static void test_option_error_checked_before_input_errors(void)
 {
-  replay_finding("option-error-checked-before-input-errors", OPEN);
+  replay_finding("option-error-checked-before-input-errors", FIXED);
 }
 
-/* Finding 2. Float, r = 2^-127 against |o - c| ~ 2^64: after the power-of-two prescale r^2 flushes
+/* Finding 2 (fixed by 4e17ce6). Float, r = 2^-127 against |o - c| ~ 2^64: after the power-of-two prescale r^2 flushes
  * to zero, and a clear miss (rho = 2^60 r) comes back as two tangent hits whose ray-facing
  * normal has n.d > 0. */
 static void test_float_tiny_radius_spurious_tangent(void)
 {
-  replay_finding("float-tiny-radius-spurious-tangent", OPEN);
+  replay_finding("float-tiny-radius-spurious-tangent", FIXED);
 }
 
-/* Finding 3. Float, subnormal r = 2^-133 with h = 2: the ray crosses the axis (e = 1), the exact
+/* Finding 3 (fixed by 4e17ce6). Float, subnormal r = 2^-133 with h = 2: the ray crosses the axis (e = 1), the exact
  * hits are t = 4e-40 and 6e-40; float returns t = 0 and 5e-40, both flagged tangent. Same root
  * cause as finding 2 (r much smaller than the prescale length). */
 static void test_float_subnormal_radius_spurious_tangent(void)
 {
-  replay_finding("float-subnormal-radius-spurious-tangent", OPEN);
+  replay_finding("float-subnormal-radius-spurious-tangent", FIXED);
 }
 
-/* Finding 4. Double, h = 2^-1050 (subnormal) seen from |o - c| = 2^127: h/2 underflows in the
+/* Finding 4 (fixed by 4e17ce6). Double, h = 2^-1050 (subnormal) seen from |o - c| = 2^127: h/2 underflows in the
  * scaled frame, and a ray whose wall crossings lie 2^700 half-heights off the band gets a wall
  * hit (v = -0) with n.d > 0. The exact answer (MPFR reference) is a miss. */
 static void test_double_subnormal_height_spurious_wall_hit(void)
 {
-  replay_finding("double-subnormal-height-spurious-wall-hit", OPEN);
+  replay_finding("double-subnormal-height-spurious-wall-hit", FIXED);
 }
 
-/* Finding 5. Float, origin 1.7e7 from a unit cylinder (ulp of t = 1 = r): the normal comes from
+/* Finding 5 (fixed by 4e17ce6). Float, origin 1.7e7 from a unit cylinder (ulp of t = 1 = r): the normal comes from
  * the rounded hit point o + t d, and the "ray-facing" normal of the entry hit is (0, 0, -1)
  * with d = (-1, -1, -1): n.d = +1, against the contract n.d <= 0. */
 static void test_float_far_origin_normal_faces_away(void)
 {
-  replay_finding("float-far-origin-normal-faces-away", OPEN);
+  replay_finding("float-far-origin-normal-faces-away", FIXED);
 }
 
-/* Finding 6. Float, o = 1.25 2^70 on the x axis, d = 2^101 x, r = 2^27: same rounded hit point as
+/* Finding 6 (fixed by 4e17ce6). Float, o = 1.25 2^70 on the x axis, d = 2^101 x, r = 2^27: same rounded hit point as
  * finding 5, and the normal is not even unit: |n| = 0.729 (n = (0, -0.73, 0)); the exact
  * normals are (-1, 0, 0) and (1, 0, 0). */
 static void test_float_far_ray_normal_not_unit(void)
 {
-  replay_finding("float-far-ray-normal-not-unit", OPEN);
+  replay_finding("float-far-ray-normal-not-unit", FIXED);
 }
 
-/* Finding 7. Float, capped, a ray along the axis through a disk (h = 1680, |d| = 1.75 2^66): both
+/* Finding 7 (fixed by 4e17ce6). Float, capped, a ray along the axis through a disk (h = 1680, |d| = 1.75 2^66): both
  * cap crossings round to the same t, and the entry is labelled CAP_LOW although the ray comes
  * from the high side (a.d < 0): parts (and normals) of entry and exit are swapped. */
 static void test_float_thin_disk_caps_swapped_at_equal_t(void)
 {
-  replay_finding("float-thin-disk-caps-swapped-at-equal-t", OPEN);
+  replay_finding("float-thin-disk-caps-swapped-at-equal-t", FIXED);
 }
 
-/* Finding 7, double: h = 2^-68.8 disk, d = (0, 32, -2048) against an axis along +z: entry
+/* Finding 7, double (fixed by 4e17ce6): h = 2^-68.8 disk, d = (0, 32, -2048) against an axis along +z: entry
  * reported on CAP_LOW at t = 2^-11, exit on CAP_HIGH at the same t; the ray enters through
  * CAP_HIGH. */
 static void test_double_thin_disk_caps_swapped_at_equal_t(void)
 {
-  replay_finding("double-thin-disk-caps-swapped-at-equal-t", OPEN);
+  replay_finding("double-thin-disk-caps-swapped-at-equal-t", FIXED);
 }
 
-/* Finding 8. Float, capped: a CAP_HIGH hit reports v = 0x1.0488p-15 while h/2 = 0x1.0486ap-15: v is
+/* Finding 8 (fixed by 4e17ce6). Float, capped: a CAP_HIGH hit reports v = 0x1.0488p-15 while h/2 = 0x1.0486ap-15: v is
  * computed from the hit point instead of being exactly +-h/2 as the contract says, and leaves
  * [-h/2, h/2]. */
 static void test_float_cap_hit_v_above_half_height(void)
 {
-  replay_finding("float-cap-hit-v-above-half-height", OPEN);
+  replay_finding("float-cap-hit-v-above-half-height", FIXED);
 }
 
-/* Finding 9. Float, a hit whose exact t = -7.4e-46 lies below the smallest subnormal: the library
+/* Finding 9 (fixed by 4e17ce6). Float, a hit whose exact t = -7.4e-46 lies below the smallest subnormal: the library
  * returns t = -2^-149 with t_err = 0. The bound leaves out the rounding of t itself (half a
  * subnormal ulp here), so the exact t is not in [t - t_err, t + t_err]. */
 static void test_float_subnormal_t_zero_error_bound(void)
 {
-  replay_finding("float-subnormal-t-zero-error-bound", OPEN);
+  replay_finding("float-subnormal-t-zero-error-bound", FIXED);
 }
 
-/* Finding 10 (fixed in cylinder_isect.h 7b10f29..07a8b34). Double, axis (2^-1030, 0, 1), a ray
+/* Finding 10 (fixed by 07a8b34). Double, axis (2^-1030, 0, 1), a ray
  * through the axis: the default tier found both crossings (t = 606.8, 910.2, as the MPFR
  * reference), CYL_PRECISE found none. */
 static void test_double_precise_tier_misses_with_subnormal_axis(void)
 {
   replay_finding("double-precise-tier-misses-with-subnormal-axis", FIXED);
+}
+
+/* Finding 11 (fixed by 2d48a4c). Float, capped, a needle: r = 2^-135 (subnormal) with h = 2^123, and a ray passing
+ * 2^77 radii from the axis (e = -1.5e64, a clear miss; double and the MPFR reference agree):
+ * the library returns two wall hits at t = 0 with t_err = +inf. Found after 4e17ce6. */
+static void test_float_needle_subnormal_radius_spurious_wall_hits(void)
+{
+  replay_finding("float-needle-subnormal-radius-spurious-wall-hits", FIXED);
+}
+
+/* Finding 12 (fixed by 2d48a4c). Double, r = 2^-1074 (the smallest subnormal), h = 1.28, origin on the axis, d along
+ * the axis' normal plane at 0.98 of it: the exact answer is one exit at t = 4.9e-324; the
+ * library returns two wall hits at t = -0 and +0 (t_err = +inf) whose normal (0, 0, 1) is not
+ * orthogonal to the axis (n.a = 0.17). Found after 4e17ce6. */
+static void test_double_subnormal_radius_normal_along_axis(void)
+{
+  replay_finding("double-subnormal-radius-normal-along-axis", FIXED);
+}
+
+/* Finding 13. Float, capped, a ray within e = 2e-12 of grazing the wall of a cylinder with
+ * r = 1.1 2^40 (deep inside the float tangent band 2^-16, but not flagged tangent): the exit is
+ * reported on CAP_HIGH at t = 2.07e11 +- 9.9e4, where the ray is 1.73 r from the axis; double
+ * on the same numbers exits through the wall at t = 210936. Both tiers. Found on 2d48a4c. */
+static void test_float_near_tangent_exit_cap_outside_disk(void)
+{
+  replay_finding("float-near-tangent-exit-cap-outside-disk", OPEN);
+}
+
+/* Finding 14. Float, default tier: a = 1.3 2^-78 (0.7, 0.35, -0.7) direction, r = h = 1.3 2^89,
+ * origin 1.6 2^89 from c: one wall hit at t = 0.73 reported with v = h/2 exactly while the
+ * point at that t has v = 1.5 h/2 (a clamped v on a crossing beyond the rim); the exact answer,
+ * double and the precise tier all say miss. Found on 2d48a4c. */
+static void test_float_far_tiny_axis_wall_hit_beyond_rim(void)
+{
+  replay_finding("float-far-tiny-axis-wall-hit-beyond-rim", OPEN);
+}
+
+/* Finding 14, second input (from the grid corpus): a from_segment cylinder with r = 1.3 2^92,
+ * CYL_PRECISE asked for; the default tier's wall hit reports v = 1.9 2^86 while its point has
+ * v = 1.1 2^92. */
+static void test_float_segment_default_tier_wall_hit_beyond_rim(void)
+{
+  replay_finding("float-segment-default-tier-wall-hit-beyond-rim", OPEN);
+}
+
+/* Finding 15. Float, default tier, the simplest one: o = 0, d = (0, 1, 1.1 2^-143), c = (0, 5, 2),
+ * a = z, r = 1, h = 2: the ray passes 2 below the center, 1 below the low rim, so it misses;
+ * the library returns wall hits at t = 4 and 6 with v clamped to -1. The axial speed a.d is
+ * subnormal, the slab crossing times (+-h/2 - a.w)/a.d overflow, and the slab clip is lost.
+ * With d = (0, 1, 0) or d_z = 2^-126 it is right. Found on 2d48a4c. */
+static void test_float_subnormal_axial_speed_hits_beyond_rim(void)
+{
+  replay_finding("float-subnormal-axial-speed-hits-beyond-rim", OPEN);
 }
 
 int main(void)
@@ -155,5 +208,11 @@ int main(void)
   RUN_TEST(test_float_cap_hit_v_above_half_height);
   RUN_TEST(test_float_subnormal_t_zero_error_bound);
   RUN_TEST(test_double_precise_tier_misses_with_subnormal_axis);
+  RUN_TEST(test_float_needle_subnormal_radius_spurious_wall_hits);
+  RUN_TEST(test_double_subnormal_radius_normal_along_axis);
+  RUN_TEST(test_float_near_tangent_exit_cap_outside_disk);
+  RUN_TEST(test_float_far_tiny_axis_wall_hit_beyond_rim);
+  RUN_TEST(test_float_segment_default_tier_wall_hit_beyond_rim);
+  RUN_TEST(test_float_subnormal_axial_speed_hits_beyond_rim);
   return UNITY_END();
 }

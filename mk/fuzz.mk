@@ -81,7 +81,7 @@ fuzz-merge: fuzz-build fuzz-seeds
 	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect); extra=$(FUZZ_DIR)/seeds;; \
 	              fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid); extra=$(FUZZ_DIR)/seeds_grid;; esac; \
 	  rm -rf $(FUZZ_DIR)/merged/$$h && mkdir -p $(FUZZ_DIR)/merged/$$h $(FUZZ_DIR)/work/$$h $$c; \
-	  $(FUZZ_DIR)/$$h -merge=1 -use_counters=0 $(FUZZ_DIR)/merged/$$h $$c $$extra $(FUZZ_DIR)/work/$$h >$(FUZZ_DIR)/$$h-merge.log 2>&1 \
+	  $(FUZZ_DIR)/$$h -merge=1 -use_counters=0 -artifact_prefix=$(FUZZ_DIR)/artifacts/merge-$$h- $(FUZZ_DIR)/merged/$$h $$c $$extra $(FUZZ_DIR)/work/$$h >$(FUZZ_DIR)/$$h-merge.log 2>&1 \
 	    || { tail -n 20 $(FUZZ_DIR)/$$h-merge.log; exit 1; }; \
 	  rm -f $$c/* && cp $(FUZZ_DIR)/merged/$$h/* $$c/; \
 	  echo "$$c: $$(ls $$c | wc -l) inputs"; \
