@@ -55,7 +55,8 @@
    reported part lies in [t − t_err, t + t_err] (a bound derived from a residual evaluated in
    the same precision, see NUMERICAL NOTES); n: unit normal, facing the ray origin (n·d <= 0)
    by default, the geometric outward normal with CYL_OUTWARD; v: axial coordinate of the hit,
-   within [−h/2, h/2] (exactly ±h/2 on a cap); part: CYL_SIDE, CYL_CAP_LOW, CYL_CAP_HIGH;
+   within [−h/2, h/2] (exactly ±h/2 on a cap; on an infinite tube it saturates at the largest
+   finite value where the true v is not representable); part: CYL_SIDE, CYL_CAP_LOW, CYL_CAP_HIGH;
    flags: a set of
      CYL_F_INSIDE    the ray meets the surface from inside (it leaves the solid, or crosses the
                      tube's wall outward: an origin inside gets this on its first hit);
@@ -558,8 +559,9 @@ CYL__INL void CYL__P(cross_dw)(const CYL__R x[3], const CYL__R yh[3], const CYL_
    of nh − q·dh (FMA). */
 CYL__INL CYL__R CYL__P(div_dw)(CYL__R nh, CYL__R nl, CYL__R dh, CYL__R dl)
 {
-    CYL__R q = nh / dh;
-    CYL__R rem = CYL__FMAR(-q, dh, nh) + nl - q * dl;
+    CYL__R q = nh / dh, rem;
+    if (!CYL__P(finite)(q)) return q; /* overflowed (a·d subnormal): the remainder is NaN */
+    rem = CYL__FMAR(-q, dh, nh) + nl - q * dl;
     return q + rem / dh;
 }
 
@@ -724,11 +726,13 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
 #ifndef CYL_NO_PRECISE
     if (f->precise) {
         CYL__P(acc) sp, sb, sc, sd;
+        CYL__R Pl;
         int i;
         CYL__P(cross_dw)(f->a, f->w, f->wl, f->m, f->ml);
         sp.hi = sp.lo = sb.hi = sb.lo = sc.hi = sc.lo = sd.hi = sd.lo = 0;
         CYL__P(acc_dot_dw)(&sp, f->w, f->wl, f->s, f->sl);
         P = sp.hi + sp.lo;
+        Pl = sp.lo - (P - sp.hi);
         CYL__P(acc_dot_dw)(&sb, f->m, f->ml, f->s, f->sl);
         B = sb.hi + sb.lo;
         /* C = |m|² − r²|a|² and D = r²|s|² − P², each as one compensated sum; r²|a|² is
@@ -747,7 +751,8 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
         sc.lo = -sc.lo;
         CYL__P(acc_dot_dw)(&sc, f->m, f->ml, f->m, f->ml);
         C = sc.hi + sc.lo;
-        CYL__P(acc_prod)(&sd, -P, P);
+        CYL__P(acc_prod)(&sd, -P, P); /* P² from the double word P: e to O(u²) */
+        sd.lo -= 2 * P * Pl;
         D = sd.hi + sd.lo;
     } else
 #endif
@@ -755,18 +760,17 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
         /* m as a double word from the exact w + wl, P compensated, r²|a|² as a double word:
            what the root correction in finish needs for a residual exact to O(u²) */
         CYL__R r2l = CYL__FMAR(f->r, f->r, -r2);
+        /* the same m on every entry point, so that occluded and intersect classify alike */
+        CYL__P(cross_dw)(f->a, f->w, f->wl, f->m, f->ml);
         if (full) {
             CYL__R zero[3] = {0, 0, 0}, aal, p;
             CYL__P(acc) sa;
-            CYL__P(cross_dw)(f->a, f->w, f->wl, f->m, f->ml);
             sa.hi = sa.lo = 0;
             CYL__P(acc_dot_dw)(&sa, f->a, zero, f->a, zero);
             aal = sa.lo - (f->aa - sa.hi);
             p = r2 * f->aa;
             f->R2 = p;
             f->R2l = CYL__FMAR(r2, f->aa, -p) + r2 * aal + r2l * f->aa;
-        } else { /* a shadow ray needs the roots, not their correction */
-            CYL__P(cross)(f->a, f->w, f->m);
         }
         P = CYL__P(dot2)(f->w, f->s) + (CYL__P(dot)(f->w, f->sl) + CYL__P(dot)(f->wl, f->s));
         B = CYL__P(dot)(f->m, f->s);
@@ -916,7 +920,7 @@ CYL__INL int CYL__P(in_disk)(const CYL__P(frame) *f, CYL__R t)
 }
 
 /* All crossings of the chosen surface (at most 2), sorted, then those in [tmin, tmax]. */
-/* full = 0 (occluded): only the classification is needed, not what corrects the roots. */
+/* full = 0 (occluded): the classification only, without what corrects the roots. */
 CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                           int full, CYL__P(frame) *f, CYL__P(cand) out[2])
 {
@@ -987,13 +991,15 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         }
         if (caps && f->H <= CYL__MAXR) {
             if (pos[0] <= 0 && pos[1] >= 0) {
-                c[0].t = pos[0] ? sl[0] : tw[0];
-                c[0].part = pos[0] ? sp[0] : CYL_SIDE;
-                c[0].flags = pos[0] ? 0u : tf;
-                c[1].t = pos[1] ? sl[1] : tw[1];
-                c[1].part = pos[1] ? sp[1] : CYL_SIDE;
-                c[1].flags = CYL_F_INSIDE | (pos[1] ? 0u : tf);
-                n = 2;
+                for (k = 0; k < 2; k++) {
+                    /* a grazing wall interval is only known to the tangent band: a cap end
+                       it produces must still lie on its disk, else it is no crossing */
+                    if (pos[k] && tangent && !CYL__P(in_disk)(f, sl[k])) continue;
+                    c[n].t = pos[k] ? sl[k] : tw[k];
+                    c[n].part = pos[k] ? sp[k] : CYL_SIDE;
+                    c[n].flags = (k ? CYL_F_INSIDE : 0u) | (pos[k] ? 0u : tf);
+                    n++;
+                }
             }
         } else {
             for (k = 0; k < 2; k++)
@@ -1151,6 +1157,8 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, un
     if (opts & CYL_OUTWARD) face = 1;
     for (i = 0; i < 3; i++) hit->n[i] = face * no[i];
     v = f->el ? CYL__P(scale)(v, f->el) : v;
+    /* an infinite tube's v can exceed the format even where t does not: saturate */
+    v = v > CYL__MAXR ? CYL__MAXR : (v < -CYL__MAXR ? -CYL__MAXR : v);
     /* a wall hit inside the slab has |v| <= h/2 up to rounding: report it within */
     hit->v = c->part == CYL_SIDE ? (v > f->Hu ? f->Hu : (v < -f->Hu ? -f->Hu : v))
                                  : (c->part == CYL_CAP_HIGH ? f->Hu : -f->Hu);
