@@ -832,6 +832,9 @@ CYL__INL void CYL__P(refine)(const CYL__P(frame) *f, CYL__R t, int upper, CYL__R
         CYL__R p = t * f->s[i], pe = CYL__FMAR(t, f->s[i], -p), yh, ye, yl;
         CYL__P(two_sum)(f->m[i], p, &yh, &ye);
         yl = ye + pe + f->ml[i] + t * f->sl[i];
+        /* y can be far smaller than m and t·s (origin far away): renormalise, so that the
+           dropped yl² is O(u²)·y² */
+        CYL__P(two_sum)(yh, yl, &yh, &yl);
         CYL__P(acc_prod)(&sf, yh, yh);
         sf.lo += 2 * yh * yl;
         G += (yh + yl) * f->s[i];
