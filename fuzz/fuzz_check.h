@@ -481,7 +481,10 @@ static void fz_check_hit(const char *what, const fz_prob *p, const fz_geo *g, un
     /* v itself is computed in the library's precision from w, t and d (even a.d alone carries
      * an error u |d|): a few roundings of |w| + |t||d|, and in the subnormal range an absolute
      * half ulp */
-    if (!(fabsl(v - h->v) <= vtol + FZ_DECIDE_ULPS * u * (fz_abssum(g->w) + fabsl(h->t) * fz_abssum(p->d) + fabsl(v)) +
+    /* an axial coordinate beyond the precision's range can only be reported saturated */
+    fz_real vmax = p->dbl ? (fz_real)DBL_MAX : (fz_real)FLT_MAX;
+    int vsat = fabsl(v) - vtol > vmax && fabsl(h->v) >= vmax && (h->v > 0) == (v > 0);
+    if (!vsat && !(fabsl(v - h->v) <= vtol + FZ_DECIDE_ULPS * u * (fz_abssum(g->w) + fabsl(h->t) * fz_abssum(p->d) + fabsl(v)) +
                                  (p->dbl ? 0x1p-1074L : 0x1p-149L)))
       fz_failf("%s: reported v=%La but the point at t has v=%La (tol %Lg)", what, h->v, v, vtol);
     if (h->part == CYL_SIDE) {

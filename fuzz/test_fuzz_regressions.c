@@ -158,40 +158,88 @@ static void test_double_subnormal_radius_normal_along_axis(void)
   replay_finding("double-subnormal-radius-normal-along-axis", FIXED);
 }
 
-/* Finding 13. Float, capped, a ray within e = 2e-12 of grazing the wall of a cylinder with
+/* Finding 13 (fixed by 452bd00). Float, capped, a ray within e = 2e-12 of grazing the wall of a cylinder with
  * r = 1.1 2^40 (deep inside the float tangent band 2^-16, but not flagged tangent): the exit is
  * reported on CAP_HIGH at t = 2.07e11 +- 9.9e4, where the ray is 1.73 r from the axis; double
  * on the same numbers exits through the wall at t = 210936. Both tiers. Found on 2d48a4c. */
 static void test_float_near_tangent_exit_cap_outside_disk(void)
 {
-  replay_finding("float-near-tangent-exit-cap-outside-disk", OPEN);
+  replay_finding("float-near-tangent-exit-cap-outside-disk", FIXED);
 }
 
-/* Finding 14. Float, default tier: a = 1.3 2^-78 (0.7, 0.35, -0.7) direction, r = h = 1.3 2^89,
+/* Finding 14 (fixed by 452bd00). Float, default tier: a = 1.3 2^-78 (0.7, 0.35, -0.7) direction, r = h = 1.3 2^89,
  * origin 1.6 2^89 from c: one wall hit at t = 0.73 reported with v = h/2 exactly while the
  * point at that t has v = 1.5 h/2 (a clamped v on a crossing beyond the rim); the exact answer,
  * double and the precise tier all say miss. Found on 2d48a4c. */
 static void test_float_far_tiny_axis_wall_hit_beyond_rim(void)
 {
-  replay_finding("float-far-tiny-axis-wall-hit-beyond-rim", OPEN);
+  replay_finding("float-far-tiny-axis-wall-hit-beyond-rim", FIXED);
 }
 
-/* Finding 14, second input (from the grid corpus): a from_segment cylinder with r = 1.3 2^92,
+/* Finding 14 (fixed by 452bd00), second input (from the grid corpus): a from_segment cylinder with r = 1.3 2^92,
  * CYL_PRECISE asked for; the default tier's wall hit reports v = 1.9 2^86 while its point has
  * v = 1.1 2^92. */
 static void test_float_segment_default_tier_wall_hit_beyond_rim(void)
 {
-  replay_finding("float-segment-default-tier-wall-hit-beyond-rim", OPEN);
+  replay_finding("float-segment-default-tier-wall-hit-beyond-rim", FIXED);
 }
 
-/* Finding 15. Float, default tier, the simplest one: o = 0, d = (0, 1, 1.1 2^-143), c = (0, 5, 2),
+/* Finding 15 (fixed by 452bd00). Float, default tier, the simplest one: o = 0, d = (0, 1, 1.1 2^-143), c = (0, 5, 2),
  * a = z, r = 1, h = 2: the ray passes 2 below the center, 1 below the low rim, so it misses;
  * the library returns wall hits at t = 4 and 6 with v clamped to -1. The axial speed a.d is
  * subnormal, the slab crossing times (+-h/2 - a.w)/a.d overflow, and the slab clip is lost.
  * With d = (0, 1, 0) or d_z = 2^-126 it is right. Found on 2d48a4c. */
 static void test_float_subnormal_axial_speed_hits_beyond_rim(void)
 {
-  replay_finding("float-subnormal-axial-speed-hits-beyond-rim", OPEN);
+  replay_finding("float-subnormal-axial-speed-hits-beyond-rim", FIXED);
+}
+
+/* Finding 16 (fixed by 452bd00). Double, capped, from_segment with |p1 - p0| ~ 2^819 and a ray whose numbers span
+ * 2^-1020 .. 2^1009: cyld_occluded returns 1 while cyld_intersect and cyld_intersect_all find
+ * nothing. Found within 3000 executions on 78babb9 ("occluded skips what only corrects roots"). */
+static void test_double_occluded_disagrees_with_intersect(void)
+{
+  replay_finding("double-occluded-disagrees-with-intersect", FIXED);
+}
+
+/* Finding 15, double (fixed by 452bd00): o = (2^-1022, 1.0000002, 0), d = (1, 2^-1062, 0), axis -y (a = (0, -2^769, 1)),
+ * r = 1, h = 2: the ray runs 2e-7 outside the low rim; the default tier returns a wall hit at
+ * t = -1 with v = -1 (clamped), the precise tier and the exact answer a miss. */
+static void test_double_subnormal_axial_speed_hit_beyond_rim(void)
+{
+  replay_finding("double-subnormal-axial-speed-hit-beyond-rim", FIXED);
+}
+
+/* Finding 16, the other direction (fixed by 452bd00): float, from_segment, two tangent-flagged wall hits at
+ * t = 1.9e-26 that cylf_intersect reports and cylf_occluded does not (78babb9). */
+static void test_float_occluded_misses_tangent_hits(void)
+{
+  replay_finding("float-occluded-misses-tangent-hits", FIXED);
+}
+
+/* Finding 17 (settled by 452bd00, v saturation). Float, from_segment whose |p1 - p0| overflows
+ * (h = +inf): the hit's axial coordinate, 5.8e38, is beyond the float range; it was reported as
+ * +inf, now as FLT_MAX (the harness accepts a saturated v only where the exact one is out of
+ * range). */
+static void test_float_infinite_tube_v_overflows(void)
+{
+  replay_finding("float-infinite-tube-v-overflows", FIXED);
+}
+
+/* Finding 18. Float, a needle again: from_segment with |p1 - p0| ~ 2^77 and r = 1.0 2^-139
+ * (subnormal); the ray misses by 10^49 radii (e = -2.5e99) and gets two wall hits at t = -0 and
+ * +0 with t_err = +inf. Found on 484ba2a, still there in 452bd00. */
+static void test_float_needle_segment_spurious_wall_hits(void)
+{
+  replay_finding("float-needle-segment-spurious-wall-hits", OPEN);
+}
+
+/* Finding 18, precise tier: |p1 - p0| = 2^51, r = 2^-129.9 (subnormal): CYL_PRECISE returns a wall
+ * hit at t = 2.3e30 (t_err = +inf) on a ray that misses by 10^38 radii; the default tier and
+ * double say miss. Found on 452bd00. */
+static void test_float_needle_segment_precise_tier_spurious_wall_hit(void)
+{
+  replay_finding("float-needle-segment-precise-tier-spurious-wall-hit", OPEN);
 }
 
 int main(void)
@@ -214,5 +262,11 @@ int main(void)
   RUN_TEST(test_float_far_tiny_axis_wall_hit_beyond_rim);
   RUN_TEST(test_float_segment_default_tier_wall_hit_beyond_rim);
   RUN_TEST(test_float_subnormal_axial_speed_hits_beyond_rim);
+  RUN_TEST(test_double_occluded_disagrees_with_intersect);
+  RUN_TEST(test_double_subnormal_axial_speed_hit_beyond_rim);
+  RUN_TEST(test_float_occluded_misses_tangent_hits);
+  RUN_TEST(test_float_infinite_tube_v_overflows);
+  RUN_TEST(test_float_needle_segment_spurious_wall_hits);
+  RUN_TEST(test_float_needle_segment_precise_tier_spurious_wall_hit);
   return UNITY_END();
 }

@@ -119,8 +119,8 @@ fuzz-replay: unity $(FUZZ_RUNNERS)
 	@bash scripts/run-tests.sh $(RESULTS)/fuzz $(FUZZ_RUNNERS)
 
 # ---------------------------------------------------------------- coverage
-# The replay driver built with clang's source-based coverage, run over both corpora; the report
-# covers cylinder_isect.h only.
+# The replay driver built with clang's source-based coverage, run over both corpora and the
+# findings; the report covers cylinder_isect.h only.
 $(FUZZ_DIR)/replay-cov: fuzz/replay.c $(FUZZ_HDRS) $(UNITY_C) $(FUZZ_REF_OBJ_COV)
 	@mkdir -p $(@D)
 	$(CLANG) $(WARN_C) -O0 -fprofile-instr-generate -fcoverage-mapping $(UNITY_FLAGS) -I. -Ifuzz \
@@ -130,9 +130,12 @@ $(FUZZ_DIR)/unity-cov.o: $(UNITY_C) | unity
 	@mkdir -p $(@D)
 	$(CLANG) -O0 $(UNITY_FLAGS) -w -c $< -o $@
 
+# The findings (fuzz/findings/) count too; an open one may fail there without stopping the report.
 fuzz-cov: unity $(FUZZ_DIR)/replay-cov
-	@rm -f $(FUZZ_DIR)/cov.profraw
-	LLVM_PROFILE_FILE=$(FUZZ_DIR)/cov.profraw $(FUZZ_DIR)/replay-cov >$(FUZZ_DIR)/cov-replay.txt 2>&1 || \
+	@rm -f $(FUZZ_DIR)/cov*.profraw
+	LLVM_PROFILE_FILE=$(FUZZ_DIR)/cov-corpus.profraw $(FUZZ_DIR)/replay-cov >$(FUZZ_DIR)/cov-replay.txt 2>&1 || \
 	  { tail -n 20 $(FUZZ_DIR)/cov-replay.txt; exit 1; }
-	$(LLVM_PROFDATA) merge -sparse $(FUZZ_DIR)/cov.profraw -o $(FUZZ_DIR)/cov.profdata
+	-LLVM_PROFILE_FILE=$(FUZZ_DIR)/cov-findings.profraw $(FUZZ_DIR)/replay-cov -v fuzz/findings/* \
+	  >$(FUZZ_DIR)/cov-findings.txt 2>&1
+	$(LLVM_PROFDATA) merge -sparse $(FUZZ_DIR)/cov-corpus.profraw $(FUZZ_DIR)/cov-findings.profraw -o $(FUZZ_DIR)/cov.profdata
 	@bash fuzz/coverage.sh "$(LLVM_COV)" $(FUZZ_DIR)/replay-cov $(FUZZ_DIR)/cov.profdata $(FUZZ_DIR)
