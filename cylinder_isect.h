@@ -255,6 +255,8 @@
    FMA and -fno-math-errno), <math.h> otherwise. */
 #if defined(__GNUC__) || defined(__clang__)
 #define CYL__MEMCPY(d, s, n) __builtin_memcpy(d, s, n)
+#define CYL__FABSF(x) __builtin_fabsf(x)
+#define CYL__FABS(x) __builtin_fabs(x)
 #ifndef CYL_SQRTF
 #define CYL_SQRTF(x) __builtin_sqrtf(x)
 #endif
@@ -270,6 +272,8 @@
 #else
 #include <string.h>
 #define CYL__MEMCPY(d, s, n) memcpy(d, s, n)
+#define CYL__FABSF(x) ((x) < 0 ? -(x) : (x))
+#define CYL__FABS(x) ((x) < 0 ? -(x) : (x))
 #if !defined(CYL_SQRTF) || !defined(CYL_SQRT) || !defined(CYL_FMAF) || !defined(CYL_FMA)
 #include <math.h>
 #endif
@@ -314,6 +318,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__C(x) x##f
 #define CYL__SQRTR(x) CYL_SQRTF(x)
 #define CYL__FMAR(a, b, c) CYL_FMAF(a, b, c)
+#define CYL__FABSR(x) CYL__FABSF(x)
 #define CYL__U (FLT_EPSILON * 0.5f)
 #define CYL__MAXR FLT_MAX
 #define CYL__MINR FLT_MIN
@@ -335,6 +340,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #undef CYL__C
 #undef CYL__SQRTR
 #undef CYL__FMAR
+#undef CYL__FABSR
 #undef CYL__U
 #undef CYL__MAXR
 #undef CYL__MINR
@@ -359,6 +365,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__C(x) x
 #define CYL__SQRTR(x) CYL_SQRT(x)
 #define CYL__FMAR(a, b, c) CYL_FMA(a, b, c)
+#define CYL__FABSR(x) CYL__FABS(x)
 #define CYL__U (DBL_EPSILON * 0.5)
 #define CYL__MAXR DBL_MAX
 #define CYL__MINR DBL_MIN
@@ -380,6 +387,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #undef CYL__C
 #undef CYL__SQRTR
 #undef CYL__FMAR
+#undef CYL__FABSR
 #undef CYL__U
 #undef CYL__MAXR
 #undef CYL__MINR
@@ -408,7 +416,7 @@ typedef struct CYL__N(hit) {
 
 /* ------------------------------------------------------------------ small exact tools */
 
-CYL__INL CYL__R CYL__P(abs)(CYL__R x) { return x < 0 ? -x : x; }
+CYL__INL CYL__R CYL__P(abs)(CYL__R x) { return CYL__FABSR(x); }
 CYL__INL CYL__R CYL__P(max)(CYL__R x, CYL__R y) { return x > y ? x : y; }
 CYL__INL int CYL__P(finite)(CYL__R x) { return x >= -CYL__MAXR && x <= CYL__MAXR; }
 CYL__INL int CYL__P(nonzero)(CYL__R x) { return x < 0 || x > 0; }
@@ -523,14 +531,28 @@ CYL__INL void CYL__P(acc_prod)(CYL__P(acc) *s, CYL__R x, CYL__R y)
 
 /* z = x × (yh + yl) as a double word zh + zl (x exact): each component's two products are
    split exactly, so zh + zl is accurate to O(u²) relative. */
+/* A fresh accumulator started with the exact product x·y. */
+CYL__INL CYL__P(acc) CYL__P(acc_first)(CYL__R x, CYL__R y)
+{
+    CYL__P(acc) s;
+    s.hi = x * y;
+    s.lo = CYL__FMAR(x, y, -s.hi);
+    return s;
+}
+
+/* x·y for exact x and y, into a fresh accumulator. */
+CYL__INL CYL__P(acc) CYL__P(dot_acc)(const CYL__R x[3], const CYL__R y[3])
+{
+    CYL__P(acc) s = CYL__P(acc_first)(x[0], y[0]);
+    CYL__P(acc_prod)(&s, x[1], y[1]);
+    CYL__P(acc_prod)(&s, x[2], y[2]);
+    return s;
+}
+
 /* x·y as if computed in twice the precision, then rounded (Ogita, Rump, Oishi's Dot2). */
 CYL__INL CYL__R CYL__P(dot2)(const CYL__R x[3], const CYL__R y[3])
 {
-    CYL__P(acc) s;
-    s.hi = x[0] * y[0];
-    s.lo = CYL__FMAR(x[0], y[0], -s.hi);
-    CYL__P(acc_prod)(&s, x[1], y[1]);
-    CYL__P(acc_prod)(&s, x[2], y[2]);
+    CYL__P(acc) s = CYL__P(dot_acc)(x, y);
     return s.hi + s.lo;
 }
 
@@ -612,7 +634,7 @@ CYL__INL int CYL__P(check)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
 typedef struct CYL__P(frame) {
     CYL__R a[3], d[3], w[3], wl[3];
     CYL__R r, H;          /* radius, half height (+inf: infinite tube)                     */
-    CYL__R aa, na;        /* |a|², |a|                                                     */
+    CYL__R aa, aal, na;   /* |a|² (+ its low part), |a|                                    */
     CYL__R s[3], sl[3];   /* s = a × d (+ low part on the precise path)                    */
     CYL__R m[3], ml[3];   /* m = a × w (+ low part)                                        */
     CYL__R A, R2, sq;     /* |s|², r²|a|², √(|a|²D) (the wall's half discriminant)       */
@@ -705,7 +727,12 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
        rounds up) */
     f->Hu = cyl->h * CYL__C(0.5);
     if (f->Hu + f->Hu > cyl->h) f->Hu = (cyl->h - CYL__MINR * 2 * CYL__U) * CYL__C(0.5);
-    f->aa = CYL__P(dot)(f->a, f->a);
+    {
+        /* |a|² as a double word aa + aal (the cap planes and r²|a|² use the low part) */
+        CYL__P(acc) sa = CYL__P(dot_acc)(f->a, f->a);
+        f->aa = sa.hi + sa.lo;
+        f->aal = sa.lo - (f->aa - sa.hi);
+    }
     f->na = CYL__SQRTR(f->aa);
 }
 
@@ -763,14 +790,9 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
         /* the same m on every entry point, so that occluded and intersect classify alike */
         CYL__P(cross_dw)(f->a, f->w, f->wl, f->m, f->ml);
         if (full) {
-            CYL__R zero[3] = {0, 0, 0}, aal, p;
-            CYL__P(acc) sa;
-            sa.hi = sa.lo = 0;
-            CYL__P(acc_dot_dw)(&sa, f->a, zero, f->a, zero);
-            aal = sa.lo - (f->aa - sa.hi);
-            p = r2 * f->aa;
+            CYL__R p = r2 * f->aa;
             f->R2 = p;
-            f->R2l = CYL__FMAR(r2, f->aa, -p) + r2 * aal + r2l * f->aa;
+            f->R2l = CYL__FMAR(r2, f->aa, -p) + r2 * f->aal + r2l * f->aa;
         }
         P = CYL__P(dot2)(f->w, f->s) + (CYL__P(dot)(f->w, f->sl) + CYL__P(dot)(f->wl, f->s));
         B = CYL__P(dot)(f->m, f->s);
@@ -943,17 +965,13 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
            axis, and the numerator for origins near a cap plane. a·d, a·w and |a| are
            therefore carried as double words (Dot2; |a| with one correction of the square
            root), on every path: caps are the part of the default path they make accurate. */
-        CYL__P(acc) s1, s2, s3;
-        CYL__R zero[3] = {0, 0, 0};
-        s1.hi = s1.lo = s2.hi = s2.lo = s3.hi = s3.lo = 0;
-        CYL__P(acc_dot_dw)(&s1, f->a, zero, f->d, zero);
+        CYL__P(acc) s1 = CYL__P(dot_acc)(f->a, f->d), s2 = CYL__P(dot_acc)(f->a, f->w);
         f->ad = s1.hi + s1.lo;
         f->adl = s1.lo - (f->ad - s1.hi);
-        CYL__P(acc_dot_dw)(&s2, f->a, zero, f->w, f->wl);
+        s2.lo += CYL__P(dot)(f->a, f->wl);
         f->aw = s2.hi + s2.lo;
         f->awl = s2.lo - (f->aw - s2.hi);
-        CYL__P(acc_dot_dw)(&s3, f->a, zero, f->a, zero);
-        f->nal = (CYL__FMAR(-f->na, f->na, s3.hi) + s3.lo) / (2 * f->na);
+        f->nal = (CYL__FMAR(-f->na, f->na, f->aa) + f->aal) / (2 * f->na);
     } else {
         f->ad = CYL__P(dot)(f->a, f->d);
         f->aw = CYL__P(dot)(f->a, f->w);
