@@ -31,7 +31,7 @@ MUTANTS = [
  ("NO_NORMAL ignored side", "v = CYL__FMAR(c->t, f->ad, f->aw) / f->na;\n        if (!(opts & CYL_NO_NORMAL)) {", "v = CYL__FMAR(c->t, f->ad, f->aw) / f->na;\n        if (1) {"),
  ("parallel band x8", "if (f->A <= CYL__PARA * CYL__PARA * f->aa", "if (f->A <= 64 * CYL__PARA * CYL__PARA * f->aa"),
  ("parallel band /8", "if (f->A <= CYL__PARA * CYL__PARA * f->aa", "if (64 * f->A <= CYL__PARA * CYL__PARA * f->aa"),
- ("cap entry as side", "c[0].part = pos[0] ? sp[0] : CYL_SIDE;", "c[0].part = CYL_SIDE;"),
+ ("cap hits as side", "c[n].part = pos[k] ? sp[k] : CYL_SIDE;", "c[n].part = CYL_SIDE;"),
  ("cap v swapped", "(c->part == CYL_CAP_HIGH ? f->Hu : -f->Hu);", "(c->part == CYL_CAP_HIGH ? -f->Hu : f->Hu);"),
  ("h=0 accepted", "if (!(cyl->h > 0)) return CYL_E_HEIGHT;", "if (!(cyl->h >= 0)) return CYL_E_HEIGHT;"),
  ("r=inf accepted", "if (!(cyl->r > 0) || !(cyl->r <= CYL__MAXR))", "if (!(cyl->r > 0))"),
