@@ -47,7 +47,7 @@
        1 if anything is hit in range, 0 if not, or an error: the shadow-ray test, the cheapest.
    cylf_cylinder cylf_from_segment(const float p0[3], const float p1[3], float r)
        The cylinder whose axis runs from p0 (low cap) to p1 (high cap): pipes, bonds, bones.
-       p0 == p1 gives h = 0, which intersect reports as CYL_E_HEIGHT.
+       p0 == p1 gives a = 0 (and h = 0), which intersect reports as CYL_E_ZERO_AXIS.
    const char *cyl_strerror(int code)
        A short English description of any return value.
 
