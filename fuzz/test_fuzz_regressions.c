@@ -242,6 +242,23 @@ static void test_float_needle_segment_precise_tier_spurious_wall_hit(void)
   replay_finding("float-needle-segment-precise-tier-spurious-wall-hit", OPEN);
 }
 
+/* Finding 19. Float, both tiers: o and c at (2^-126, 0, -2^127) (the origin on the axis), d and a
+ * with subnormal components (d = (2^-134.8, 1.2 2^-119, 1.3 2^-139)): the exit is returned at
+ * t = 7.33379e-4 +- 6.7e-10, the exact t (double and MPFR agree) is 7.33141e-4: off by 3.6e5
+ * times the bound. Found on 2c5bb67. */
+static void test_float_subnormal_direction_t_err_not_rigorous(void)
+{
+  replay_finding("float-subnormal-direction-t-err-not-rigorous", OPEN);
+}
+
+/* Finding 20. Float, capped, d = (2^-149, 2^-149, FLT_MAX) from the center of a disk with
+ * h = 1.4 2^-20: the cap crossings are at t = +-9.96e-46 (half the smallest subnormal; double
+ * finds them), float returns t = +-5.2e-40 with t_err = 2.8e-45. Found on 2c5bb67. */
+static void test_float_max_speed_cap_t_underflow(void)
+{
+  replay_finding("float-max-speed-cap-t-underflow", OPEN);
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -268,5 +285,7 @@ int main(void)
   RUN_TEST(test_float_infinite_tube_v_overflows);
   RUN_TEST(test_float_needle_segment_spurious_wall_hits);
   RUN_TEST(test_float_needle_segment_precise_tier_spurious_wall_hit);
+  RUN_TEST(test_float_subnormal_direction_t_err_not_rigorous);
+  RUN_TEST(test_float_max_speed_cap_t_underflow);
   return UNITY_END();
 }
