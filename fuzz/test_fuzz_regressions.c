@@ -259,6 +259,14 @@ static void test_float_max_speed_cap_t_underflow(void)
   replay_finding("float-max-speed-cap-t-underflow", OPEN);
 }
 
+/* Finding 18, third input (the first CI-style run, scripts/ci-fuzz.sh, found it in 26 s on
+ * eaa48ca): r = 0.52 against |p1 - p0| ~ 2^128 and an origin 2^77 away; a miss by 10^61 radii
+ * (e = -1.5e122) returned as two wall hits at t = -0.79 with t_err = +inf. */
+static void test_float_far_segment_spurious_wall_hits(void)
+{
+  replay_finding("float-far-segment-spurious-wall-hits", OPEN);
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -287,5 +295,6 @@ int main(void)
   RUN_TEST(test_float_needle_segment_precise_tier_spurious_wall_hit);
   RUN_TEST(test_float_subnormal_direction_t_err_not_rigorous);
   RUN_TEST(test_float_max_speed_cap_t_underflow);
+  RUN_TEST(test_float_far_segment_spurious_wall_hits);
   return UNITY_END();
 }
