@@ -54,19 +54,24 @@ $(FUZZ_DIR)/fuzz_grid: fuzz/fuzz_grid.c $(FUZZ_HDRS) $(FUZZ_REF_OBJ_CLANG)
 .PHONY: fuzz fuzz-build fuzz-seeds fuzz-merge fuzz-cov fuzz-replay
 fuzz-build: $(addprefix $(FUZZ_DIR)/,$(FUZZ_HARNESSES))
 
-# Each harness runs on a scratch copy of its corpus (new inputs land in build/, not in git);
-# a violation aborts, libFuzzer writes the input to build/fuzz/artifacts/ and make fails.
+# Each harness runs on a scratch corpus in build/ plus the committed one (new inputs never land in
+# git); a violation aborts that harness, libFuzzer writes the input to build/fuzz/artifacts/, the
+# other harnesses still run, and make fails at the end.
 fuzz: fuzz-build
 	@mkdir -p $(FUZZ_DIR)/artifacts
-	@set -e; for h in $(FUZZ_HARNESSES); do \
+	@bad=0; for h in $(FUZZ_HARNESSES); do \
 	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect);; fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid);; esac; \
 	  mkdir -p $(FUZZ_DIR)/work/$$h; \
 	  echo "== $$h: $(FUZZ_SECONDS) s on $$c"; \
-	  $(FUZZ_DIR)/$$h -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -max_len=512 \
-	    -artifact_prefix=$(FUZZ_DIR)/artifacts/$$h- $(FUZZ_DIR)/work/$$h $$c \
-	    >$(FUZZ_DIR)/$$h.log 2>&1 || { tail -n 40 $(FUZZ_DIR)/$$h.log; echo "FINDING in $$h: see $(FUZZ_DIR)/artifacts/"; exit 1; }; \
-	  grep -E '^#[0-9]+.*DONE|stat::number_of_executed_units|stat::average_exec_per_sec' $(FUZZ_DIR)/$$h.log; \
-	done
+	  if $(FUZZ_DIR)/$$h -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -max_len=512 \
+	    -artifact_prefix=$(FUZZ_DIR)/artifacts/$$h- $(FUZZ_DIR)/work/$$h $$c >$(FUZZ_DIR)/$$h.log 2>&1; then \
+	    grep -E 'stat::number_of_executed_units|stat::average_exec_per_sec' $(FUZZ_DIR)/$$h.log; \
+	  else \
+	    grep -m1 -B1 'ERROR: libFuzzer' $(FUZZ_DIR)/$$h.log | head -n 1 | cut -c1-400; \
+	    grep 'Test unit written' $(FUZZ_DIR)/$$h.log; \
+	    echo "FINDING in $$h (log: $(FUZZ_DIR)/$$h.log; replay: $(FUZZ_DIR)/replay-gcc -v FILE)"; bad=1; \
+	  fi; \
+	done; exit $$bad
 
 $(FUZZ_DIR)/gen_seeds: fuzz/gen_seeds.c fuzz/fuzz_check.h cylinder_isect.h
 	@mkdir -p $(@D)
