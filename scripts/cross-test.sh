@@ -21,8 +21,9 @@ UNITY_DEFS="-DUNITY_INCLUDE_DOUBLE -DUNITY_SUPPORT_64"
 # The other areas' Unity runners that need nothing but libc: the fuzz corpus replay and the
 # fuzz regression tests, without the MPFR reference (no cross build of libmpfr here: the
 # reference comparisons run natively in make test; every other invariant runs here too).
+# CROSS_FUZZ=0 leaves them out.
 others=()
-if [ -z "${CROSS_TESTS:-}" ]; then
+if [ -z "${CROSS_TESTS:-}" ] && [ "${CROSS_FUZZ:-1}" != 0 ]; then
   for f in fuzz/replay.c fuzz/test_fuzz_regressions.c; do [ -f "$f" ] && others+=("$f"); done
 fi
 FUZZ_FLAGS="-Ifuzz '-DFUZZ_CORPUS_DIR=\"$PWD/fuzz/corpus\"' '-DFUZZ_GRID_DIR=\"$PWD/fuzz/corpus_grid\"' \
