@@ -7,6 +7,7 @@
  *           bits 1-2  function: 0 intersect, 1 intersect_all, 2 occluded,
  *                     3 cyl*_from_segment(p0 = c, p1 = a, r) then intersect_all
  *           bits 3-5  NULL pointer: 5 ray, 6 cylinder, 7 hit; anything else none
+ *                     (function 3: 5 and 6 make from_segment's p0 / p1 NULL instead)
  *           bit 6     always run the exact-reference check (otherwise a hash samples 1 in 16)
  *   byte 1            option bits 0..7 (bit 7 is unknown to the library)
  *   byte 2            if bit 7 is set, option bit (byte2 & 31) is also set (unknown bits)
@@ -558,6 +559,7 @@ static void fz_check_overlap(const char *what, const fz_hit *x, const fz_hit *y)
 /* Magnitudes outside [2^-60, 2^60] are left to the invariants: there, float's range limits
  * (overflow of squared terms, subnormal rounding) decide, not conditioning. */
 #define FZ_RANGE 0x1p60L
+/* from_segment is checked on segments whose coordinates stay below this (no overflow in |p1-p0|) */
 #define FZ_RANGE_SEG 0x1p60L
 
 /* Returns 1 if every decision of a computation with unit roundoff uf (hit or miss, part, inside,

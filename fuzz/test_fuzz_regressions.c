@@ -267,6 +267,22 @@ static void test_float_far_segment_spurious_wall_hits(void)
   replay_finding("float-far-segment-spurious-wall-hits", OPEN);
 }
 
+/* Finding 18, double: from_segment 2^606 from the origin with a far smaller radius; a miss by
+ * 10^477 radii (e = -7e955) returned as two wall hits at t = 0.0214 with t_err = +inf. */
+static void test_double_far_segment_spurious_wall_hits(void)
+{
+  replay_finding("double-far-segment-spurious-wall-hits", OPEN);
+}
+
+/* Finding 21. Double, CYL_PRECISE: |d| ~ 2^888, the cylinder 2^887 away, a ray that misses by
+ * 10^95 radii (e = -2.6e191; the default tier says miss): one wall hit at t = 2.6e-107 with a
+ * finite t_err = 4.1e-122, i.e. a "rigorous" enclosure of an intersection that does not exist.
+ * Found on eaa48ca. */
+static void test_double_precise_tier_hit_on_clear_miss(void)
+{
+  replay_finding("double-precise-tier-hit-on-clear-miss", OPEN);
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -296,5 +312,7 @@ int main(void)
   RUN_TEST(test_float_subnormal_direction_t_err_not_rigorous);
   RUN_TEST(test_float_max_speed_cap_t_underflow);
   RUN_TEST(test_float_far_segment_spurious_wall_hits);
+  RUN_TEST(test_double_far_segment_spurious_wall_hits);
+  RUN_TEST(test_double_precise_tier_hit_on_clear_miss);
   return UNITY_END();
 }
