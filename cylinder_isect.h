@@ -463,11 +463,14 @@ CYL__INL void CYL__P(pow2pair)(int k, CYL__R f[2])
     f[1] = CYL__P(exp2i)(k2);
 }
 
+/* x·2^k for any k: steps of the largest normal powers, so that only the last step can round
+   (into the subnormals). */
 CYL__INL CYL__R CYL__P(scale)(CYL__R x, int k)
 {
-    CYL__R f[2];
-    CYL__P(pow2pair)(k, f);
-    return x * f[0] * f[1];
+    const int lo = 1 - CYL__EBIAS, hi = CYL__EBIAS;
+    while (k > hi) { x *= CYL__P(exp2i)(hi); k -= hi; }
+    while (k < lo) { x *= CYL__P(exp2i)(lo); k -= lo; }
+    return x * CYL__P(exp2i)(k);
 }
 
 /* ab − cd with Kahan's FMA algorithm: relative error <= 2u (Jeannerod, Louvet, Muller 2013). */
@@ -691,21 +694,21 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
         f->e = f->el = 0;
         f->coarse = 0;
     } else {
-        CYL__R o[3], c[3], fa[2], fd[2], fl[2];
-        int kl, kd, pre = 0;
-        for (i = 0; i < 3; i++) { o[i] = ray->o[i]; c[i] = cyl->c[i]; }
-        /* o − c overflows only when both are near the top of the range: halve the lengths
-           first (exact there), and account for it in the exponent. */
-        if (!(CYL__P(max)(CYL__P(amax3)(o), CYL__P(amax3)(c)) <= CYL__MAXR * CYL__C(0.25))) {
-            for (i = 0; i < 3; i++) { o[i] *= CYL__C(0.5); c[i] *= CYL__C(0.5); }
-            rr *= CYL__C(0.5);
-            hh *= CYL__C(0.5);
-            pre = 1;
-            for (i = 0; i < 3; i++) CYL__P(two_sum)(o[i], -c[i], &f->w[i], &f->wl[i]);
-            L = CYL__P(max)(CYL__P(amax3)(f->w), rr);
+        CYL__R fa[2], fd[2], fl[2], fw[2];
+        int kl, kd, half[3];
+        /* o − c overflows only where both are near the top of the range: that component is
+           formed from halves (exact there: no other number is touched, so a subnormal r or
+           coordinate keeps every bit) and carries one more factor 2 into the frame. */
+        kl = CYL__P(ilogb)(rr);
+        for (i = 0; i < 3; i++) {
+            half[i] = !CYL__P(finite)(f->w[i]);
+            if (half[i])
+                CYL__P(two_sum)(ray->o[i] * CYL__C(0.5), -cyl->c[i] * CYL__C(0.5), &f->w[i],
+                                &f->wl[i]);
+            if (CYL__P(nonzero)(f->w[i]) && CYL__P(ilogb)(CYL__P(abs)(f->w[i])) + half[i] > kl)
+                kl = CYL__P(ilogb)(CYL__P(abs)(f->w[i])) + half[i];
         }
         kd = CYL__P(ilogb)(md);
-        kl = CYL__P(ilogb)(L);
         /* ... unless h is so much longer that h/2 would overflow in the frame */
         if (hfin && CYL__P(ilogb)(hh) - kl > CYL__EBIAS - 4) kl = CYL__P(ilogb)(hh) - (CYL__EBIAS - 4);
         CYL__P(pow2pair)(-CYL__P(ilogb)(ma), fa);
@@ -714,13 +717,15 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
         for (i = 0; i < 3; i++) {
             f->a[i] = cyl->a[i] * fa[0] * fa[1];
             f->d[i] = ray->d[i] * fd[0] * fd[1];
-            f->w[i] = f->w[i] * fl[0] * fl[1];
-            f->wl[i] = f->wl[i] * fl[0] * fl[1];
+            fw[0] = fl[0];
+            fw[1] = half[i] ? fl[1] * 2 : fl[1];
+            f->w[i] = f->w[i] * fw[0] * fw[1];
+            f->wl[i] = f->wl[i] * fw[0] * fw[1];
         }
         f->r = rr * fl[0] * fl[1];
         f->H = hh * fl[0] * fl[1] * CYL__C(0.5);
-        f->e = kl + pre - kd;
-        f->el = kl + pre;
+        f->e = kl - kd;
+        f->el = kl;
         f->coarse = f->r < CYL__RCOARSE;
     }
     /* h/2 for the reported v, never above the true half height (h/2 of an odd subnormal h
@@ -950,7 +955,7 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
                           int full, CYL__P(frame) *f, CYL__P(cand) out[2])
 {
     CYL__P(cand) c[2];
-    CYL__R sl[2], tw[2], fs[2];
+    CYL__R sl[2], tw[2];
     int sp[2], n = 0, k, kept = 0, tangent = 0;
     int caps = (opts & CYL_CAPS) != 0;
     CYL__P(prepare)(ray, cyl, opts, f);
@@ -1032,10 +1037,8 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
                 }
         }
     }
-    fs[0] = fs[1] = 1;
-    if (f->e) CYL__P(pow2pair)(f->e, fs);
     for (k = 0; k < n; k++) {
-        CYL__R tu = f->e ? c[k].t * fs[0] * fs[1] : c[k].t;
+        CYL__R tu = f->e ? CYL__P(scale)(c[k].t, f->e) : c[k].t;
         if (tu >= ray->tmin && tu <= ray->tmax && CYL__P(finite)(tu)) {
             out[kept] = c[k];
             out[kept].tu = tu;
@@ -1098,7 +1101,7 @@ CYL__INL CYL__R CYL__P(bound)(const CYL__P(frame) *f, const CYL__P(cand) *c,
 CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, unsigned opts,
                             const CYL__N(ray) *ray, CYL__N(hit) *hit)
 {
-    CYL__R no[3] = {0, 0, 0}, y[3] = {0, 0, 0}, ys = 0, v, fs[2], face = 1;
+    CYL__R no[3] = {0, 0, 0}, y[3] = {0, 0, 0}, ys = 0, v, face = 1;
     CYL__P(cand) cc = *cin, *c = &cc;
     int i;
     if (!f->precise && !f->coarse && c->part == CYL_SIDE && !(c->flags & CYL_F_TANGENT)) {
@@ -1183,12 +1186,11 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, un
     /* a wall hit inside the slab has |v| <= h/2 up to rounding: report it within */
     hit->v = c->part == CYL_SIDE ? (v > f->Hu ? f->Hu : (v < -f->Hu ? -f->Hu : v))
                                  : (c->part == CYL_CAP_HIGH ? f->Hu : -f->Hu);
-    fs[0] = fs[1] = 1;
-    if (f->e) CYL__P(pow2pair)(f->e, fs);
     if (opts & CYL_NO_ERRBOUND) {
         hit->t_err = CYL__MAXR * 2;
     } else {
-        CYL__R te = CYL__P(bound)(f, c, y, ys) * fs[0] * fs[1];
+        CYL__R te = CYL__P(bound)(f, c, y, ys);
+        if (f->e) te = CYL__P(scale)(te, f->e);
         const CYL__R tiny = CYL__MINR * 2 * CYL__U; /* the smallest subnormal */
         /* the scaling back, or a user t among the subnormals, rounded once more */
         if (te < CYL__MINR) te += tiny;
