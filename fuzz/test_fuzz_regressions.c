@@ -231,7 +231,7 @@ static void test_float_infinite_tube_v_overflows(void)
  * +0 with t_err = +inf. Found on 484ba2a, still there in 452bd00. */
 static void test_float_needle_segment_spurious_wall_hits(void)
 {
-  replay_finding("float-needle-segment-spurious-wall-hits", OPEN);
+  replay_finding("float-needle-segment-spurious-wall-hits", FIXED);
 }
 
 /* Finding 18, precise tier: |p1 - p0| = 2^51, r = 2^-129.9 (subnormal): CYL_PRECISE returns a wall
@@ -239,7 +239,7 @@ static void test_float_needle_segment_spurious_wall_hits(void)
  * double say miss. Found on 452bd00. */
 static void test_float_needle_segment_precise_tier_spurious_wall_hit(void)
 {
-  replay_finding("float-needle-segment-precise-tier-spurious-wall-hit", OPEN);
+  replay_finding("float-needle-segment-precise-tier-spurious-wall-hit", FIXED);
 }
 
 /* Finding 19. Float, both tiers: o and c at (2^-126, 0, -2^127) (the origin on the axis), d and a
@@ -248,7 +248,7 @@ static void test_float_needle_segment_precise_tier_spurious_wall_hit(void)
  * times the bound. Found on 2c5bb67. */
 static void test_float_subnormal_direction_t_err_not_rigorous(void)
 {
-  replay_finding("float-subnormal-direction-t-err-not-rigorous", OPEN);
+  replay_finding("float-subnormal-direction-t-err-not-rigorous", FIXED);
 }
 
 /* Finding 20. Float, capped, d = (2^-149, 2^-149, FLT_MAX) from the center of a disk with
@@ -256,7 +256,7 @@ static void test_float_subnormal_direction_t_err_not_rigorous(void)
  * finds them), float returns t = +-5.2e-40 with t_err = 2.8e-45. Found on 2c5bb67. */
 static void test_float_max_speed_cap_t_underflow(void)
 {
-  replay_finding("float-max-speed-cap-t-underflow", OPEN);
+  replay_finding("float-max-speed-cap-t-underflow", FIXED);
 }
 
 /* Finding 18, third input (the first CI-style run, scripts/ci-fuzz.sh, found it in 26 s on
@@ -264,14 +264,14 @@ static void test_float_max_speed_cap_t_underflow(void)
  * (e = -1.5e122) returned as two wall hits at t = -0.79 with t_err = +inf. */
 static void test_float_far_segment_spurious_wall_hits(void)
 {
-  replay_finding("float-far-segment-spurious-wall-hits", OPEN);
+  replay_finding("float-far-segment-spurious-wall-hits", FIXED);
 }
 
 /* Finding 18, double: from_segment 2^606 from the origin with a far smaller radius; a miss by
  * 10^477 radii (e = -7e955) returned as two wall hits at t = 0.0214 with t_err = +inf. */
 static void test_double_far_segment_spurious_wall_hits(void)
 {
-  replay_finding("double-far-segment-spurious-wall-hits", OPEN);
+  replay_finding("double-far-segment-spurious-wall-hits", FIXED);
 }
 
 /* Finding 21. Double, CYL_PRECISE: |d| ~ 2^888, the cylinder 2^887 away, a ray that misses by
@@ -280,7 +280,7 @@ static void test_double_far_segment_spurious_wall_hits(void)
  * Found on eaa48ca. */
 static void test_double_precise_tier_hit_on_clear_miss(void)
 {
-  replay_finding("double-precise-tier-hit-on-clear-miss", OPEN);
+  replay_finding("double-precise-tier-hit-on-clear-miss", FIXED);
 }
 
 int main(void)
