@@ -55,6 +55,7 @@ $(REPORT_VENV)/.installed:
 report: deps $(BENCH_BUILD)/bench $(REPORT_VENV)/.installed
 	$(BENCH_BUILD)/bench --seed $(BENCH_SEED) --n $(BENCH_N) --json $(BENCH_BUILD)/results.json | tee $(BENCH_BUILD)/bench.txt
 	BENCH_LIB_REV="$(BENCH_LIB_REV)" $(REPORT_VENV)/bin/python bench/report.py $(BENCH_BUILD)/results.json bench/REPORT.md bench/error_vs_time.png docs/accuracy.md
+	$(MAKE) --no-print-directory readme
 
 $(BENCH_BUILD)/probe: bench/probe.c $(BENCH_SRCS) $(BENCH_HDRS)
 	@mkdir -p $(@D)
