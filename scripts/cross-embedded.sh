@@ -18,6 +18,11 @@ SIZES_OUT=$S CROSS_ONLY="x86_64 m4f m0 rv32" bash scripts/cross-sizes.sh --no-do
 
 fail=0
 bad() { echo "FAIL $*"; fail=$((fail + 1)); }
+# GCC lowers a struct assignment to a call to memcpy when it does not expand it inline (RV32 at
+# -Os does so for 16 bytes): say where such a call comes from.
+memcpy_hint() {
+  case " $* " in *" memcpy "*|*" memset "*) echo "     (a struct assignment or initialisation in the library that GCC turned into a libc call: assign the fields one by one)";; esac
+}
 
 # The runtime configurations read their options from these two variables, defined by the caller.
 ALLOWED_UNDEF='^(cfg_runtime_opts|cfg_runtime_entry)$'
@@ -29,7 +34,7 @@ for o in "$S"/m4f/*.o; do
   dis=$(arm-none-eabi-objdump -d "$o")
   if grep -qE '\.f64|__aeabi_d' <<<"$dis"; then bad "m4f $b: double-precision instruction or helper:"; grep -E '\.f64|__aeabi_d' <<<"$dis" | head -5; fi
   und=$(arm-none-eabi-nm -u "$o" | awk '{print $2}' | grep -vE "$ALLOWED_UNDEF" || true)
-  [ -z "$und" ] || bad "m4f $b: undefined symbols (library or helper calls): $(echo $und)"
+  [ -z "$und" ] || { bad "m4f $b: undefined symbols (library or helper calls): $(echo $und)"; memcpy_hint $und; }
   case $b in f_occluded|f_occl_caps) ;; *)
     grep -q 'vsqrt\.f32' <<<"$dis" || bad "m4f $b: no vsqrt.f32 (sqrt not inlined?)";;
   esac
@@ -45,7 +50,7 @@ for o in "$S"/rv32/*.o; do
   dops=$(awk -F'\t' 'NF >= 3 { print $3 }' <<<"$dis" | grep -E '^(f[a-z.]*\.d(\.[a-z]+)?|fld|fsd|fcvt\.d\.[a-z]+|fcvt\.[a-z]+\.d)$' || true)
   [ -z "$dops" ] || bad "rv32 $b: double-precision instructions: $(echo $dops | head -c 200)"
   und=$(riscv64-unknown-elf-nm -u "$o" | awk '{print $2}' | grep -vE "$ALLOWED_UNDEF" || true)
-  [ -z "$und" ] || bad "rv32 $b: undefined symbols: $(echo $und)"
+  [ -z "$und" ] || { bad "rv32 $b: undefined symbols (library or helper calls): $(echo $und)"; memcpy_hint $und; }
   case $b in f_occluded|f_occl_caps) ;; *)
     grep -q 'fsqrt\.s' <<<"$dis" || bad "rv32 $b: no fsqrt.s";;
   esac
