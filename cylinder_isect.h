@@ -646,6 +646,7 @@ typedef struct CYL__P(frame) {
     CYL__R awl, nal, adl; /* precise path: low parts of a·w, |a| and a·d                    */
     CYL__R Hu;            /* h/2 in user units, rounded toward zero                        */
     int coarse;           /* r² underflows in the frame: linear wall test, t_err = +inf     */
+    int capscale;         /* H is in units 2^capscale times the frame's (h/2 would overflow) */
     int e;                /* user t = frame t · 2^e                                        */
     int el;               /* user length = frame length · 2^el                             */
     int precise;
@@ -692,7 +693,7 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
         f->r = rr;
         f->H = hh * CYL__C(0.5);
         f->e = f->el = 0;
-        f->coarse = 0;
+        f->coarse = f->capscale = 0;
     } else {
         CYL__R fa[2], fd[2], fl[2], fw[2];
         int kl, kd, half[3];
@@ -709,8 +710,10 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
                 kl = CYL__P(ilogb)(CYL__P(abs)(f->w[i])) + half[i];
         }
         kd = CYL__P(ilogb)(md);
-        /* ... unless h is so much longer that h/2 would overflow in the frame */
-        if (hfin && CYL__P(ilogb)(hh) - kl > CYL__EBIAS - 4) kl = CYL__P(ilogb)(hh) - (CYL__EBIAS - 4);
+        /* h/2 alone has a scale of its own when it is so much longer that it would overflow
+           in this frame: the cap planes then use lengths 2^capscale times coarser */
+        f->capscale = hfin && CYL__P(ilogb)(hh) - kl > CYL__EBIAS - 4
+                          ? CYL__P(ilogb)(hh) - (CYL__EBIAS - 4) - kl : 0;
         CYL__P(pow2pair)(-CYL__P(ilogb)(ma), fa);
         CYL__P(pow2pair)(-kd, fd);
         CYL__P(pow2pair)(-kl, fl);
@@ -723,7 +726,8 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
             f->wl[i] = f->wl[i] * fw[0] * fw[1];
         }
         f->r = rr * fl[0] * fl[1];
-        f->H = hh * fl[0] * fl[1] * CYL__C(0.5);
+        f->H = (f->capscale ? CYL__P(scale)(hh, -(kl + f->capscale)) : hh * fl[0] * fl[1]) *
+               CYL__C(0.5);
         f->e = kl - kd;
         f->el = kl;
         f->coarse = f->r < CYL__RCOARSE;
@@ -900,7 +904,7 @@ CYL__INL int CYL__P(side)(const CYL__P(frame) *f, CYL__R t, CYL__R tl)
    part of each end. Returns 0 when the ray runs beside the slab (a·d == 0 outside it). */
 CYL__INL int CYL__P(slab)(const CYL__P(frame) *f, CYL__R sl[2], int part[2])
 {
-    CYL__R hna, tl, th;
+    CYL__R hna, tl, th, aw, awl;
     if (!(f->H <= CYL__MAXR)) { /* infinite tube */
         sl[0] = -CYL__MAXR * 2; /* -inf */
         sl[1] = CYL__MAXR * 2;
@@ -908,11 +912,13 @@ CYL__INL int CYL__P(slab)(const CYL__P(frame) *f, CYL__R sl[2], int part[2])
         return 1;
     }
     hna = f->H * f->na;
+    aw = f->capscale ? CYL__P(scale)(f->aw, -f->capscale) : f->aw;
+    awl = f->capscale ? CYL__P(scale)(f->awl, -f->capscale) : f->awl;
     if (!CYL__P(nonzero)(f->ad)) {
         sl[0] = -CYL__MAXR * 2;
         sl[1] = CYL__MAXR * 2;
         part[0] = part[1] = CYL_SIDE;
-        return CYL__P(abs)(f->aw) <= hna;
+        return CYL__P(abs)(aw) <= hna;
     }
     {
         /* ±H|a| − a·w from the double-word |a| and a·w: the only rounding left is the
@@ -920,13 +926,17 @@ CYL__INL int CYL__P(slab)(const CYL__P(frame) *f, CYL__R sl[2], int part[2])
         CYL__P(acc) lo, hi;
         lo.hi = lo.lo = 0;
         CYL__P(acc_prod)(&lo, -f->H, f->na);
-        lo.lo -= f->H * f->nal + f->awl;
+        lo.lo -= f->H * f->nal + awl;
         hi.hi = -lo.hi;
-        hi.lo = -lo.lo - 2 * f->awl;
-        CYL__P(acc_add)(&lo, -f->aw);
-        CYL__P(acc_add)(&hi, -f->aw);
+        hi.lo = -lo.lo - 2 * awl;
+        CYL__P(acc_add)(&lo, -aw);
+        CYL__P(acc_add)(&hi, -aw);
         tl = CYL__P(div_dw)(lo.hi, lo.lo, f->ad, f->adl);
         th = CYL__P(div_dw)(hi.hi, hi.lo, f->ad, f->adl);
+        if (f->capscale) { /* back to the frame's units; far beyond any wall crossing */
+            tl = CYL__P(scale)(tl, f->capscale);
+            th = CYL__P(scale)(th, f->capscale);
+        }
     }
     if (f->ad > 0) { /* by the direction, not by comparing: a thin disk can round tl == th */
         sl[0] = tl; part[0] = CYL_CAP_LOW;
@@ -1008,7 +1018,8 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
             CYL__R tl[2];
             for (k = 0; k < 2; k++) {
                 CYL__P(refine)(f, tw[k], k, &tw[k], &tl[k]);
-                pos[k] = CYL__P(side)(f, tw[k], tl[k]);
+                pos[k] = f->capscale ? (tw[k] < sl[0] ? -1 : (tw[k] > sl[1] ? 1 : 0))
+                                     : CYL__P(side)(f, tw[k], tl[k]);
             }
         } else
 #endif
@@ -1084,6 +1095,8 @@ CYL__INL CYL__R CYL__P(bound)(const CYL__P(frame) *f, const CYL__P(cand) *c,
             d = 2 * F / bb;
         else
             d = CYL__SQRTR(F / Alo);
+    } else if (f->capscale) {
+        d = CYL__MAXR * 2; /* a cap 2^123 (float) lengths away: no bound offered */
     } else {
         CYL__R x[3], g, Eg, slope, a1 = CYL__P(asum3)(f->a);
         int i;
