@@ -2,6 +2,7 @@
  * repository root.
  *  - examples/minimal prints the hit the geometry predicts;
  *  - every scene rendered headless matches its reference PNG in examples/ref/;
+ *  - culling changes no pixel (against --no-cull);
  *  - float and double renders of a scene agree, and the error view finds no pixel where the
  *    float and double answers are farther apart than their two error bounds allow.
  * The paths of the programs come from the build (mk/examples.mk). */
@@ -106,6 +107,24 @@ static void check_float_matches_double(const char *scene)
     TEST_ASSERT_TRUE_MESSAGE(frac <= PRECISION_MAX_BAD_FRACTION, msg);
 }
 
+/* Culling (frustum grids and the tube pretest) only skips library calls that cannot hit: the
+   image must be the one that testing every cylinder gives, to the last bit. */
+static void check_culling_is_exact(const char *scene, const char *extra)
+{
+    char a[256], b[256], out[1024], opts[128], msg[512];
+    int max_diff;
+    double frac;
+    snprintf(a, sizeof a, "%s/%s-culled.png", OUT_DIR, scene);
+    snprintf(b, sizeof b, "%s/%s-unculled.png", OUT_DIR, scene);
+    snprintf(opts, sizeof opts, "--no-cull %s", extra);
+    render(scene, extra, a, out, sizeof out);
+    render(scene, opts, b, out, sizeof out);
+    frac = diff_fraction(a, b, &max_diff);
+    snprintf(msg, sizeof msg, "%s %s: culled and unculled renders differ on %.4f of the pixels "
+             "(largest %d levels)", scene, extra, frac, max_diff);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, max_diff, msg); /* exactness is the point */
+}
+
 /* The viewer's error view prints "N hits ... max R t_err, K over bound, U unconfirmed". */
 static void check_error_bound(const char *scene, const char *extra)
 {
@@ -164,6 +183,9 @@ static void test_molecule_error_within_bound(void) { check_error_bound("molecule
 static void test_pipes_error_within_bound(void) { check_error_bound("pipes", ""); }
 static void test_tubes_error_within_bound(void) { check_error_bound("tubes", ""); }
 static void test_pipes_capped_error_within_bound(void) { check_error_bound("pipes", "--caps capped"); }
+static void test_molecule_culling_exact(void) { check_culling_is_exact("molecule", ""); }
+static void test_pipes_culling_exact(void) { check_culling_is_exact("pipes", "--caps open"); }
+static void test_tubes_culling_exact(void) { check_culling_is_exact("tubes", "--double"); }
 
 int main(void)
 {
@@ -182,5 +204,8 @@ int main(void)
     RUN_TEST(test_pipes_error_within_bound);
     RUN_TEST(test_tubes_error_within_bound);
     RUN_TEST(test_pipes_capped_error_within_bound);
+    RUN_TEST(test_molecule_culling_exact);
+    RUN_TEST(test_pipes_culling_exact);
+    RUN_TEST(test_tubes_culling_exact);
     return UNITY_END();
 }

@@ -3,7 +3,8 @@
  *   viewer [options] [scene.txt]          (default scene: examples/scenes/molecule.txt)
  *
  * Every pixel is traced on the CPU with the library, on all cores (pthreads), and shown in a
- * GLFW window as a texture. Scenes are text files, one cylinder per line (see
+ * GLFW window as a texture. Rays test only the cylinders that their cell of a frustum grid
+ * lists (see "culling" below) and that pass a bounding-tube pretest. Scenes are text files, one cylinder per line (see
  * examples/scenes/make_scenes.py or docs/examples.md).
  *
  * Mouse: drag to orbit, scroll to zoom.
@@ -25,6 +26,7 @@
  *   --double  --caps scene|open|capped  --precise  --no-shadows  --split
  *   --view shade|normals|error
  *   --threads N         default: all online cores
+ *   --no-cull           test every cylinder for every ray (the culled image must be the same)
  *   --frames N          windowed: quit after N frames
  *   --readback FILE     windowed: read the last frame back with glReadPixels into FILE (PNG)
  * Exit codes: 0 ok, 1 usage or scene error, 2 no window could be opened.
@@ -54,24 +56,49 @@
 #define ERR_LOG2_RANGE 24.0
 
 /* ------------------------------------------------------------------ scene */
+/* The per-ray pretest (tube_may_hit) widens each radius by this fraction: far more than the
+   library's tangent tolerance (hits up to a relative 2^-17 outside r). */
+#define TUBE_PAD_REL 0x1p-10
+
 typedef struct object {
     cylf_cylinder cf; /* the float path traces this one */
     cyld_cylinder cd; /* the double path traces this one (parsed in double) */
     int capped;
     double rgb[3];
+    double tube_c[2][3], tube_a[2][3], tube_r2[2]; /* float [0] and double [1] copies for
+                                                      tube_may_hit: center, unit axis, r² */
 } object;
-
-typedef struct bvh_node { double lo[3], hi[3]; int first, count, right; } bvh_node;
 
 typedef struct camera { double target[3], yaw, pitch, dist, fov; } camera;
 
+typedef struct grid {
+    int gx, gy, cap_cells, cap_items;
+    int *first;   /* cell k lists item[first[k]] .. item[first[k + 1] - 1] */
+    int *item;
+    double *dmin; /* per item: no point of the widened cylinder is nearer the apex */
+} grid;
+
 typedef struct scene {
     object *obj;
-    int n, nnodes, *order;
-    bvh_node *node;
+    int n, *all;   /* all[i] = i: the list of an unculled ray */
+    double *zero;  /* n zeros: its distance bounds */
     double light[3];
     camera cam;
+    grid cam_grid, light_grid[6]; /* culling (see grid_build) */
+    int *light_order;             /* the cylinders nearest the light first ... */
+    double *light_dmin;           /* ... and their distance bounds from it */
+    double light_shift;
 } scene;
+
+static int light_build(scene *s);
+
+static void grid_free(grid *g)
+{
+    free(g->first);
+    free(g->item);
+    free(g->dmin);
+    memset(g, 0, sizeof *g);
+}
 
 /* One line of a scene file (format: examples/scenes/make_scenes.py). Returns 0, or -1 after a message. */
 static int parse_line(scene *s, const char *line, int lineno, const char *path)
@@ -79,7 +106,7 @@ static int parse_line(scene *s, const char *line, int lineno, const char *path)
     char kind[16], cap[16];
     double v[8] = {0, 0, 0, 0, 0, 0, 0, 0}, rgb[3];
     object o;
-    int i, ok = 0;
+    int i, j, ok = 0;
     memset(&o, 0, sizeof o);
     if (sscanf(line, "%15s", kind) != 1 || kind[0] == '#') return 0;
     if (!strcmp(kind, "camera")) {
@@ -123,105 +150,21 @@ static int parse_line(scene *s, const char *line, int lineno, const char *path)
             return -1;
         }
     }
+    for (i = 0; i < 2; i++) { /* the pretest's copies of the float and double cylinders */
+        double a[3] = {i ? o.cd.a[0] : (double)o.cf.a[0], i ? o.cd.a[1] : (double)o.cf.a[1],
+                       i ? o.cd.a[2] : (double)o.cf.a[2]};
+        double len = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        double r = (i ? o.cd.r : (double)o.cf.r) * (1 + TUBE_PAD_REL);
+        for (j = 0; j < 3; j++) {
+            o.tube_a[i][j] = a[j] / len;
+            o.tube_c[i][j] = i ? o.cd.c[j] : (double)o.cf.c[j];
+        }
+        o.tube_r2[i] = r * r;
+    }
     s->obj = (object *)realloc(s->obj, (size_t)(s->n + 1) * sizeof *s->obj);
     if (!s->obj) return -1;
     s->obj[s->n++] = o;
     return 0;
-}
-
-/* Axis-aligned box of a cylinder: along coordinate k it reaches |â_k| H + r sqrt(1 - â_k²). */
-static void object_box(const cyld_cylinder *c, double lo[3], double hi[3])
-{
-    double len = sqrt(c->a[0] * c->a[0] + c->a[1] * c->a[1] + c->a[2] * c->a[2]);
-    int k;
-    for (k = 0; k < 3; k++) {
-        double ak = fabs(c->a[k]) / len, e = c->r * sqrt(fmax(0.0, 1.0 - ak * ak));
-        if (ak > 0) e += ak * 0.5 * c->h; /* h may be +inf: the box is then unbounded */
-        e += 1e-5 * (e + fabs(c->c[k]));   /* covers the float copy's roundings */
-        lo[k] = c->c[k] - e;
-        hi[k] = c->c[k] + e;
-    }
-}
-
-/* Half the surface area of a box, with unbounded sides (infinite tubes) made finite. */
-static double box_area(const double lo[3], const double hi[3])
-{
-    double e[3];
-    int k;
-    for (k = 0; k < 3; k++) e[k] = fmin(hi[k] - lo[k], 1e30);
-    return e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
-}
-
-static void box_grow(double lo[3], double hi[3], const double blo[3], const double bhi[3])
-{
-    int k;
-    for (k = 0; k < 3; k++) {
-        lo[k] = fmin(lo[k], blo[k]);
-        hi[k] = fmax(hi[k], bhi[k]);
-    }
-}
-
-static void box_empty(double lo[3], double hi[3])
-{
-    int k;
-    for (k = 0; k < 3; k++) lo[k] = HUGE_VAL, hi[k] = -HUGE_VAL;
-}
-
-static void sort_by_centre(scene *s, int first, int count, int axis)
-{
-    int i, j;
-    for (i = first + 1; i < first + count; i++) /* insertion sort: scenes are small */
-        for (j = i; j > first && s->obj[s->order[j - 1]].cd.c[axis] >
-                                     s->obj[s->order[j]].cd.c[axis]; j--) {
-            int t = s->order[j];
-            s->order[j] = s->order[j - 1];
-            s->order[j - 1] = t;
-        }
-}
-
-/* A bounding volume hierarchy with one cylinder per leaf, split where the surface area
-   heuristic (sum over both sides of box area times count) is lowest, over the cylinders
-   sorted by centre along each axis. It puts a floor or a long pipe in a node of its own near
-   the root. Nodes are stored depth first: the left child follows its parent. */
-static int bvh_build(scene *s, int first, int count)
-{
-    int me = s->nnodes++, i, k, best_axis = 0, best_split = 1;
-    double best_cost = HUGE_VAL, lo[3], hi[3], *right_area;
-    bvh_node *nd = &s->node[me];
-    box_empty(nd->lo, nd->hi);
-    for (i = first; i < first + count; i++) {
-        object_box(&s->obj[s->order[i]].cd, lo, hi);
-        box_grow(nd->lo, nd->hi, lo, hi);
-    }
-    nd->first = first;
-    nd->count = count;
-    if (count == 1) return me;
-    right_area = (double *)malloc((size_t)count * sizeof *right_area);
-    for (k = 0; k < 3 && right_area; k++) {
-        double alo[3], ahi[3];
-        sort_by_centre(s, first, count, k);
-        box_empty(alo, ahi);
-        for (i = count - 1; i > 0; i--) { /* right_area[i]: the box of items i..count-1 */
-            object_box(&s->obj[s->order[first + i]].cd, lo, hi);
-            box_grow(alo, ahi, lo, hi);
-            right_area[i] = box_area(alo, ahi);
-        }
-        box_empty(alo, ahi);
-        for (i = 1; i < count; i++) {
-            double cost;
-            object_box(&s->obj[s->order[first + i - 1]].cd, lo, hi);
-            box_grow(alo, ahi, lo, hi);
-            cost = box_area(alo, ahi) * i + right_area[i] * (count - i);
-            if (cost < best_cost) best_cost = cost, best_axis = k, best_split = i;
-        }
-    }
-    free(right_area);
-    sort_by_centre(s, first, count, best_axis);
-    nd->count = 0;
-    bvh_build(s, first, best_split);
-    i = bvh_build(s, first + best_split, count - best_split);
-    s->node[me].right = i;
-    return me;
 }
 
 static int scene_load(scene *s, const char *path)
@@ -247,12 +190,25 @@ static int scene_load(scene *s, const char *path)
         fprintf(stderr, "%s: no cylinders\n", path);
         return -1;
     }
-    s->order = (int *)malloc((size_t)s->n * sizeof *s->order);
-    s->node = (bvh_node *)malloc((size_t)(2 * s->n) * sizeof *s->node);
-    if (!s->order || !s->node) return -1;
-    for (i = 0; i < s->n; i++) s->order[i] = i;
-    bvh_build(s, 0, s->n);
-    return 0;
+    s->all = (int *)malloc(sizeof *s->all * (size_t)s->n);
+    s->light_order = (int *)malloc(sizeof *s->light_order * (size_t)s->n);
+    s->zero = (double *)calloc((size_t)s->n, sizeof *s->zero);
+    s->light_dmin = (double *)malloc(sizeof *s->light_dmin * (size_t)s->n);
+    if (!s->all || !s->light_order || !s->zero || !s->light_dmin) return -1;
+    for (i = 0; i < s->n; i++) s->all[i] = i;
+    return light_build(s);
+}
+
+static void scene_free(scene *s)
+{
+    int f;
+    grid_free(&s->cam_grid);
+    for (f = 0; f < 6; f++) grid_free(&s->light_grid[f]);
+    free(s->obj);
+    free(s->all);
+    free(s->zero);
+    free(s->light_order);
+    free(s->light_dmin);
 }
 
 /* ------------------------------------------------------------------ tracing */
@@ -261,7 +217,7 @@ enum { CAPS_SCENE, CAPS_NONE, CAPS_ALL };
 static const char *const caps_name[] = {"scene", "open", "capped"};
 static const char *const view_name[] = {"shade", "normals", "error"};
 
-typedef struct settings { int use_double, caps, precise, shadows, view, split; } settings;
+typedef struct settings { int use_double, caps, precise, shadows, view, split, nocull; } settings;
 
 typedef struct hitinfo { double t, t_err, n[3]; int obj, part; unsigned flags; } hitinfo;
 
@@ -330,79 +286,371 @@ static int occluded_one(const scene *s, int i, int dbl, unsigned opts, const dou
     }
 }
 
-/* Slab test; on a hit *tin is where the ray enters the box (clipped to 0). Branch free: a
-   ray with d[k] = 0 has an infinite inv[k], so outside the slab both ends are the same
-   infinity (a miss) and on its plane one end is a NaN, which the comparisons ignore. */
-static inline int box_hit(const bvh_node *b, const double o[3], const double inv[3],
-                          double tmax, double *tin)
+typedef struct view {
+    double eye[3], fwd[3], right[3], up[3]; /* right and up scaled to the image plane at 1 */
+} view;
+
+static void make_view(const camera *c, double aspect, view *v)
 {
-    double t0 = 0, t1 = tmax;
+    double y = c->yaw * PI / 180, p = c->pitch * PI / 180, tf = tan(c->fov * PI / 360), l;
     int k;
-    for (k = 0; k < 3; k++) {
-        double a = (b->lo[k] - o[k]) * inv[k], c = (b->hi[k] - o[k]) * inv[k];
-        double near = a > c ? c : a, far = a > c ? a : c;
-        t0 = near > t0 ? near : t0;
-        t1 = far < t1 ? far : t1;
-    }
-    *tin = t0;
-    return t0 <= t1;
+    v->fwd[0] = -cos(p) * cos(y), v->fwd[1] = -cos(p) * sin(y), v->fwd[2] = -sin(p);
+    for (k = 0; k < 3; k++) v->eye[k] = c->target[k] - c->dist * v->fwd[k];
+    v->right[0] = v->fwd[1], v->right[1] = -v->fwd[0], v->right[2] = 0; /* fwd x z */
+    l = sqrt(v->right[0] * v->right[0] + v->right[1] * v->right[1]);
+    for (k = 0; k < 3; k++) v->right[k] *= tf * aspect / l;
+    v->up[0] = (v->right[1] * v->fwd[2] - v->right[2] * v->fwd[1]) / aspect;
+    v->up[1] = (v->right[2] * v->fwd[0] - v->right[0] * v->fwd[2]) / aspect;
+    v->up[2] = (v->right[0] * v->fwd[1] - v->right[1] * v->fwd[0]) / aspect;
 }
 
-/* Walks the hierarchy nearer child first, skipping boxes entered beyond the nearest hit so
-   far; nearest hit into *best (any_hit: stop at the first occluder, best->obj; skip: a
-   cylinder not to test, or -1). */
-static int trace(const scene *s, const settings *st, int dbl, int alt, int any_hit, int skip,
-                 unsigned extra, const double o[3], const double d[3], double tmax,
-                 hitinfo *best, stats *sum)
+/* ------------------------------------------------------------------ culling */
+/* Frustum grids. From an apex E, the rays E + t (F + x R + y U), t > 0, with (x, y) in one cell
+ * [x0, x1] x [y0, y1] of a grid form a convex cone. Each cell lists the cylinders that may meet
+ * its cone, nearest first, each with a lower bound of its distance from E. A cylinder is left
+ * out of a cell only when a plane through E separates the two:
+ *  - one of the cell's four side planes, with the cylinder wholly outside it (the cylinder's
+ *    support function, its largest n.(x - E), is negative), or
+ *  - one of the two planes through E that contain the axis direction and touch the cylinder's
+ *    infinite tube, with the cell's four corner rays wholly beyond it. No side plane alone ever
+ *    separates an infinite tube (nor, often, a long pipe): this test is what culls them.
+ * Primary rays use one grid of TILE x TILE pixel tiles from the eye, built every frame; shadow
+ * rays use a cube of six grids around the light, built once (the "light buffer" of Haines and
+ * Greenberg, IEEE CG&A 6(9), 1986).
+ * Culling must never drop a hit, so each cylinder is widened by CULL_PAD_REL of its radius and
+ * half height (far more than the library's tangent tolerance, a relative 2^-17 of r, and than
+ * the t error of grazing hits) plus CULL_PAD_ABS of the largest coordinate of the apex and of
+ * the center (far more than the float copy's roundings, and than any ray origin's distance
+ * from the apex: the eye rounded to float, or a shadow ray's end, which light_list checks).
+ * test_examples compares culled renders with --no-cull ones pixel for pixel. */
+#define TILE 8                /* pixels on a side of a camera grid cell */
+#define LIGHT_CELLS 32        /* cells on a side of each face of the light cube */
+#define CULL_PAD_REL 0x1p-10
+#define CULL_PAD_ABS 0x1p-16
+/* Cells are widened by this (in x, y units) so that rounding in a lookup's division never
+   sends a ray to a cell whose cone misses it. */
+#define CELL_PAD 0x1p-30
+
+/* One cylinder as seen from an apex, widened. */
+typedef struct cull {
+    double w[3], a[3], r, H, dmin; /* w = center - apex, a unit axis, H half height (or inf) */
+    double m[2][3];                /* outward normals of the two tangent planes through apex */
+    int everywhere, tangent;       /* apex within its bounding volume; tangent planes exist */
+} cull;
+
+static double dot3(const double a[3], const double b[3])
 {
-    int stack[64], sp = 0, ni = 0, found = 0, k;
-    double inv[3], tin[64], t;
-    for (k = 0; k < 3; k++) inv[k] = 1.0 / d[k];
-    sum->rays++;
-    best->t = tmax;
-    if (!box_hit(&s->node[0], o, inv, tmax, &t)) return 0;
-    for (;;) {
-        const bvh_node *nd = &s->node[ni];
-        if (nd->count && s->order[nd->first] != skip) { /* a leaf holds one cylinder */
-            int ob = s->order[nd->first], rc;
-            unsigned opts = object_opts(s, ob, st) | extra;
-            sum->calls++;
-            rc = any_hit ? occluded_one(s, ob, dbl, opts, o, d, tmax)
-                         : hit_one(s, ob, dbl, alt, opts, o, d, best->t, best);
-            if (rc < 0) sum->errors++;
-            if (rc > 0) {
-                found = 1;
-                if (any_hit) {
-                    best->obj = ob;
-                    return 1;
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double maxabs3(const double a[3])
+{
+    double m = fabs(a[0]);
+    if (fabs(a[1]) > m) m = fabs(a[1]);
+    return fabs(a[2]) > m ? fabs(a[2]) : m;
+}
+
+static void cull_prepare(const cyld_cylinder *c, const double apex[3], cull *k)
+{
+    double len = sqrt(dot3(c->a, c->a)), H = 0.5 * c->h, hfin = isinf(H) ? 0 : H;
+    double pad = CULL_PAD_REL * (c->r + hfin) + CULL_PAD_ABS * (maxabs3(apex) + maxabs3(c->c));
+    double wa, e1[3], e2[3], rho, s, co;
+    int i;
+    k->r = c->r + pad;
+    k->H = H + pad;
+    for (i = 0; i < 3; i++) k->w[i] = c->c[i] - apex[i], k->a[i] = c->a[i] / len;
+    wa = dot3(k->w, k->a);
+    for (i = 0; i < 3; i++) e1[i] = k->w[i] - wa * k->a[i]; /* apex to axis, across it */
+    rho = sqrt(dot3(e1, e1));
+    k->dmin = rho - k->r; /* distance to the infinite tube, then to the bounding sphere */
+    if (!isinf(H)) {
+        double sphere = sqrt(dot3(k->w, k->w)) - sqrt(k->r * k->r + k->H * k->H);
+        if (sphere > k->dmin) k->dmin = sphere;
+    }
+    k->everywhere = !(k->dmin > 0);
+    k->tangent = rho > k->r;
+    if (!k->tangent) return;
+    /* In the plane across the axis the tube is a disk at distance rho in direction e1; the
+       tangent lines from the apex leave e1 at the angle whose sine is r / rho. */
+    s = k->r / rho;
+    co = sqrt(1 - s * s);
+    for (i = 0; i < 3; i++) e1[i] /= rho;
+    cross3(k->a, e1, e2);
+    for (i = 0; i < 3; i++) {
+        k->m[0][i] = -s * e1[i] + co * e2[i];
+        k->m[1][i] = -s * e1[i] - co * e2[i];
+    }
+}
+
+/* The largest n.(x - apex) over the widened cylinder: n.w + H |n.a| + r |n x a|. */
+static double support(const cull *k, const double n[3])
+{
+    double na = fabs(dot3(n, k->a)), across = dot3(n, n) - na * na;
+    return dot3(n, k->w) + (na > 0 ? k->H * na : 0) + k->r * sqrt(across > 0 ? across : 0);
+}
+
+/* The culls of every cylinder from an apex, and the cylinders sorted nearest first. */
+static void cull_all(const object *obj, int n, const double apex[3], cull *k, int *order)
+{
+    int i, j;
+    for (i = 0; i < n; i++) {
+        cull_prepare(&obj[i].cd, apex, &k[i]);
+        for (j = i; j > 0 && k[order[j - 1]].dmin > k[i].dmin; j--) order[j] = order[j - 1];
+        order[j] = i;
+    }
+}
+
+/* Builds g for the cells between the edges xe[0..gx] and ye[0..gy] (ascending) of the apex's
+   rays F + x R + y U, from the n culls visited in `order` (so every list is nearest first). */
+static int grid_build(grid *g, const cull *k, const int *order, int n, const double F[3],
+                      const double R[3], const double U[3], const double *xe, int gx,
+                      const double *ye, int gy)
+{
+    int cells = gx * gy, pass, oi, ix, iy, i, total = 0;
+    double (*nx)[3] = (double (*)[3])malloc(sizeof *nx * (size_t)(2 * (gx + gy)));
+    double (*ny)[3] = nx + 2 * gx;
+    unsigned char *colok = (unsigned char *)malloc((size_t)(gx + gy)), *rowok = colok + gx;
+    int *at = (int *)malloc(sizeof *at * (size_t)cells);
+    if (!nx || !colok || !at) goto fail;
+    if (cells + 1 > g->cap_cells) {
+        free(g->first);
+        g->cap_cells = cells + 1;
+        if (!(g->first = (int *)malloc(sizeof *g->first * (size_t)g->cap_cells))) goto fail;
+    }
+    g->gx = gx, g->gy = gy;
+    /* Inward normals of every cell's side planes: n.(F + x R + y U) grows with x on the left
+       side (normal (F + x0 R) x U), shrinks with x on the right side; the same for y. */
+    for (ix = 0; ix < 2 * gx; ix++) {
+        double x = ix < gx ? xe[ix] - CELL_PAD : xe[ix - gx + 1] + CELL_PAD, v[3];
+        for (i = 0; i < 3; i++) v[i] = F[i] + x * R[i];
+        cross3(v, U, nx[ix]);
+        if ((dot3(nx[ix], R) < 0) == (ix < gx))
+            for (i = 0; i < 3; i++) nx[ix][i] = -nx[ix][i];
+    }
+    for (iy = 0; iy < 2 * gy; iy++) {
+        double y = iy < gy ? ye[iy] - CELL_PAD : ye[iy - gy + 1] + CELL_PAD, v[3];
+        for (i = 0; i < 3; i++) v[i] = F[i] + y * U[i];
+        cross3(R, v, ny[iy]);
+        if ((dot3(ny[iy], U) < 0) == (iy < gy))
+            for (i = 0; i < 3; i++) ny[iy][i] = -ny[iy][i];
+    }
+    for (pass = 0; pass < 2; pass++) {
+        if (pass == 0) memset(at, 0, sizeof *at * (size_t)cells);
+        for (oi = 0; oi < n; oi++) {
+            const cull *c = &k[order[oi]];
+            double mf[2], mr[2], mu[2];
+            for (i = 0; i < 2; i++)
+                mf[i] = dot3(c->m[i], F), mr[i] = dot3(c->m[i], R), mu[i] = dot3(c->m[i], U);
+            for (ix = 0; ix < gx; ix++)
+                colok[ix] = c->everywhere || (support(c, nx[ix]) >= 0 && support(c, nx[gx + ix]) >= 0);
+            for (iy = 0; iy < gy; iy++)
+                rowok[iy] = c->everywhere || (support(c, ny[iy]) >= 0 && support(c, ny[gy + iy]) >= 0);
+            for (iy = 0; iy < gy; iy++) {
+                if (!rowok[iy]) continue;
+                for (ix = 0; ix < gx; ix++) {
+                    int beyond = 0, cell = iy * gx + ix;
+                    if (!colok[ix]) continue;
+                    for (i = 0; i < 2 && c->tangent && !c->everywhere && !beyond; i++) {
+                        /* all four corner rays on the far side of tangent plane i */
+                        double base0 = mf[i] + (xe[ix] - CELL_PAD) * mr[i];
+                        double base1 = mf[i] + (xe[ix + 1] + CELL_PAD) * mr[i];
+                        double y0 = ye[iy] - CELL_PAD, y1 = ye[iy + 1] + CELL_PAD;
+                        beyond = base0 + y0 * mu[i] > 0 && base0 + y1 * mu[i] > 0 &&
+                                 base1 + y0 * mu[i] > 0 && base1 + y1 * mu[i] > 0;
+                    }
+                    if (beyond) continue;
+                    if (pass == 0) {
+                        at[cell]++;
+                    } else {
+                        g->item[at[cell]] = order[oi];
+                        g->dmin[at[cell]++] = c->dmin;
+                    }
                 }
-            }
-        } else if (!nd->count) {
-            int a = ni + 1, b = nd->right;
-            double ta, tb;
-            int ha = box_hit(&s->node[a], o, inv, best->t, &ta);
-            int hb = box_hit(&s->node[b], o, inv, best->t, &tb);
-            if (ha && hb) { /* go into the nearer box, keep the other for later */
-                if (tb < ta) {
-                    int x = a;
-                    double y = ta;
-                    a = b, b = x, ta = tb, tb = y;
-                }
-                stack[sp] = b;
-                tin[sp++] = tb;
-                ni = a;
-                continue;
-            }
-            if (ha || hb) {
-                ni = ha ? a : b;
-                continue;
             }
         }
-        do { /* next pending box that may still hold a nearer hit */
-            if (!sp) return found;
-            ni = stack[--sp];
-        } while (tin[sp] > best->t);
+        if (pass == 0) { /* counts to starts */
+            for (i = 0; i < cells; i++) {
+                g->first[i] = total;
+                total += at[i];
+                at[i] = g->first[i];
+            }
+            g->first[cells] = total;
+            if (total > g->cap_items) {
+                free(g->item);
+                free(g->dmin);
+                g->cap_items = total;
+                g->item = (int *)malloc(sizeof *g->item * (size_t)total);
+                g->dmin = (double *)malloc(sizeof *g->dmin * (size_t)total);
+                if (!g->item || !g->dmin) goto fail;
+            }
+        }
     }
+    free(nx);
+    free(colok);
+    free(at);
+    return 0;
+fail:
+    free(nx);
+    free(colok);
+    free(at);
+    g->cap_cells = g->cap_items = 0;
+    return -1;
+}
+
+/* The six faces of the light cube: face 2k + 1 looks along -e_k; R and U are the next axes. */
+static int light_build(scene *s)
+{
+    double edge[LIGHT_CELLS + 1];
+    cull *k = (cull *)malloc(sizeof *k * (size_t)s->n);
+    int f, i, rc = 0;
+    if (!k) return -1;
+    for (i = 0; i <= LIGHT_CELLS; i++) edge[i] = -1 + 2.0 * i / LIGHT_CELLS;
+    cull_all(s->obj, s->n, s->light, k, s->light_order);
+    for (i = 0; i < s->n; i++) s->light_dmin[i] = k[s->light_order[i]].dmin;
+    for (f = 0; f < 6 && !rc; f++) {
+        double F[3] = {0, 0, 0}, R[3] = {0, 0, 0}, U[3] = {0, 0, 0};
+        F[f / 2] = f % 2 ? -1 : 1;
+        R[(f / 2 + 1) % 3] = 1;
+        U[(f / 2 + 2) % 3] = 1;
+        rc = grid_build(&s->light_grid[f], k, s->light_order, s->n, F, R, U, edge,
+                        LIGHT_CELLS, edge, LIGHT_CELLS);
+    }
+    /* A shadow ray may end this far from the light (each coordinate) and keep its cell. */
+    s->light_shift = 0.5 * CULL_PAD_ABS * maxabs3(s->light);
+    free(k);
+    return rc;
+}
+
+/* The camera grid of one frame: TILE x TILE pixel tiles; y grows down the image. */
+static int camera_build(scene *s, const view *v, int w, int h)
+{
+    int gx = (w + TILE - 1) / TILE, gy = (h + TILE - 1) / TILE, i, rc = -1;
+    double *xe = (double *)malloc(sizeof *xe * (size_t)(gx + gy + 2)), *ye = xe + gx + 1;
+    double down[3];
+    cull *k = (cull *)malloc(sizeof *k * (size_t)s->n);
+    int *order = (int *)malloc(sizeof *order * (size_t)s->n);
+    if (xe && k && order) {
+        for (i = 0; i <= gx; i++) xe[i] = 2.0 * (i * TILE < w ? i * TILE : w) / w - 1;
+        for (i = 0; i <= gy; i++) ye[i] = 2.0 * (i * TILE < h ? i * TILE : h) / h - 1;
+        for (i = 0; i < 3; i++) down[i] = -v->up[i];
+        cull_all(s->obj, s->n, v->eye, k, order);
+        rc = grid_build(&s->cam_grid, k, order, s->n, v->fwd, v->right, down, xe, gx, ye, gy);
+    }
+    free(xe);
+    free(k);
+    free(order);
+    return rc;
+}
+
+/* The list of a camera grid cell, or every cylinder (--no-cull). */
+typedef struct list { const int *item; const double *dmin; int n; } list;
+
+static list cell_list(const grid *g, int cell)
+{
+    list l;
+    l.item = g->item + g->first[cell];
+    l.dmin = g->dmin + g->first[cell];
+    l.n = g->first[cell + 1] - g->first[cell];
+    return l;
+}
+
+static list all_list(const scene *s)
+{
+    list l;
+    l.item = s->all, l.dmin = s->zero, l.n = s->n;
+    return l;
+}
+
+/* The cylinders a shadow ray from p to p + l (l reaches the light) may meet: its light cube
+   cell, or all of them, nearest the light first, when the ray's end is too far from the light
+   for the cube's widening to cover it (a far origin rounded to float) or culling is off. */
+static list light_list(const scene *s, const settings *st, const double p[3], const double l[3])
+{
+    double q[3], x, y, off = 0;
+    int k, ix, iy, f;
+    list all;
+    all.item = s->light_order, all.dmin = s->light_dmin, all.n = s->n;
+    for (k = 0; k < 3; k++) {
+        double e = fabs(p[k] + l[k] - s->light[k]);
+        off = e > off ? e : off;
+        q[k] = -l[k]; /* from the light towards p */
+    }
+    k = fabs(q[0]) >= fabs(q[1]) ? (fabs(q[0]) >= fabs(q[2]) ? 0 : 2)
+                                 : (fabs(q[1]) >= fabs(q[2]) ? 1 : 2);
+    if (st->nocull) return all_list(s);
+    if (off > s->light_shift || !(fabs(q[k]) > 0)) return all;
+    f = 2 * k + (q[k] < 0);
+    x = q[(k + 1) % 3] / fabs(q[k]);
+    y = q[(k + 2) % 3] / fabs(q[k]);
+    ix = (int)((x + 1) * (0.5 * LIGHT_CELLS));
+    iy = (int)((y + 1) * (0.5 * LIGHT_CELLS));
+    ix = ix < 0 ? 0 : ix >= LIGHT_CELLS ? LIGHT_CELLS - 1 : ix;
+    iy = iy < 0 ? 0 : iy >= LIGHT_CELLS ? LIGHT_CELLS - 1 : iy;
+    return cell_list(&s->light_grid[f], iy * LIGHT_CELLS + ix);
+}
+
+/* Can the line o + t d meet the (widened) infinite tube of cylinder ob? Its distance from the
+   axis line is |w.n| / |n| with w = o - c and n = a x d; the comparison is widened by a
+   relative 2^-40 against the roundings of n when d is nearly parallel to the axis. Rejects
+   most of the cylinders a cell lists before the library is called. */
+static int tube_may_hit(const object *ob, int dbl, const double o[3], const double d[3])
+{
+    double w[3], n[3], wn, nn, ww, dd;
+    int k;
+    for (k = 0; k < 3; k++) w[k] = o[k] - ob->tube_c[dbl][k];
+    cross3(ob->tube_a[dbl], d, n);
+    wn = dot3(w, n), nn = dot3(n, n), ww = dot3(w, w), dd = dot3(d, d);
+    return wn * wn <= ob->tube_r2[dbl] * nn + 0x1p-40 * (ww + ob->tube_r2[dbl]) * dd;
+}
+
+/* Nearest hit along o + t d, t >= 0, among a list (nearest first): the walk stops at the first
+   cylinder no point of which can be reached before the nearest hit so far. */
+static int nearest(const scene *s, const settings *st, int dbl, int alt, unsigned extra,
+                   const double o[3], const double d[3], list l, hitinfo *best, stats *sum)
+{
+    double dlen = sqrt(dot3(d, d)) * (1 + 0x1p-40); /* an upper bound of |d| */
+    int i, found = 0;
+    sum->rays++;
+    best->t = HUGE_VAL;
+    for (i = 0; i < l.n && !(l.dmin[i] > best->t * dlen); i++) {
+        int ob = l.item[i], rc;
+        if (!st->nocull && !tube_may_hit(&s->obj[ob], dbl, o, d)) continue;
+        sum->calls++;
+        rc = hit_one(s, ob, dbl, alt, object_opts(s, ob, st) | extra, o, d, best->t, best);
+        if (rc < 0) sum->errors++;
+        if (rc > 0) found = 1;
+    }
+    return found;
+}
+
+/* Is the segment o + t l, t in [0, 1], blocked by a cylinder of the list (nearest the segment's
+   end first) other than skip? The blocker goes into *who. */
+static int blocked(const scene *s, const settings *st, int dbl, const double o[3],
+                   const double l[3], list li, int skip, int *who, stats *sum)
+{
+    double len = sqrt(dot3(l, l)) * (1 + 0x1p-40);
+    const unsigned extras = CYL_NO_NORMAL | CYL_NO_ERRBOUND;
+    int i;
+    sum->rays++;
+    for (i = 0; i < li.n && !(li.dmin[i] > len); i++) {
+        int ob = li.item[i], rc;
+        if (ob == skip || (!st->nocull && !tube_may_hit(&s->obj[ob], dbl, o, l))) continue;
+        sum->calls++;
+        rc = occluded_one(s, ob, dbl, object_opts(s, ob, st) | extras, o, l, 1.0);
+        if (rc < 0) sum->errors++;
+        if (rc > 0) {
+            *who = ob;
+            return 1;
+        }
+    }
+    return 0;
 }
 
 /* Colour for the error view: how far the float answer is from the double path's answer for
@@ -461,23 +709,7 @@ static void error_colour(const scene *s, const settings *st, int alt, const doub
     }
 }
 
-typedef struct view {
-    double eye[3], fwd[3], right[3], up[3]; /* right and up scaled to the image plane at 1 */
-} view;
-
-static void make_view(const camera *c, double aspect, view *v)
-{
-    double y = c->yaw * PI / 180, p = c->pitch * PI / 180, tf = tan(c->fov * PI / 360), l;
-    int k;
-    v->fwd[0] = -cos(p) * cos(y), v->fwd[1] = -cos(p) * sin(y), v->fwd[2] = -sin(p);
-    for (k = 0; k < 3; k++) v->eye[k] = c->target[k] - c->dist * v->fwd[k];
-    v->right[0] = v->fwd[1], v->right[1] = -v->fwd[0], v->right[2] = 0; /* fwd x z */
-    l = sqrt(v->right[0] * v->right[0] + v->right[1] * v->right[1]);
-    for (k = 0; k < 3; k++) v->right[k] *= tf * aspect / l;
-    v->up[0] = (v->right[1] * v->fwd[2] - v->right[2] * v->fwd[1]) / aspect;
-    v->up[1] = (v->right[2] * v->fwd[0] - v->right[0] * v->fwd[2]) / aspect;
-    v->up[2] = (v->right[0] * v->fwd[1] - v->right[1] * v->fwd[0]) / aspect;
-}
+static double clamp01(double x) { return x < 0 ? 0 : x > 1 ? 1 : x; }
 
 static void shade_pixel(const scene *s, const settings *st, const view *v, int x, int y,
                         int w, int h, unsigned char *out, stats *sum, int *blocker)
@@ -485,8 +717,10 @@ static void shade_pixel(const scene *s, const settings *st, const view *v, int x
     double o[3], d[3], rgb[3], px = 2 * (x + 0.5) / w - 1, py = 1 - 2 * (y + 0.5) / h;
     int k, alt = st->split && x >= w / 2;
     int dbl = st->use_double && st->view != VIEW_ERROR;
-    hitinfo hit, shadow;
+    hitinfo hit;
     unsigned extra = st->view == VIEW_ERROR ? 0u : (unsigned)CYL_NO_ERRBOUND;
+    list cands = st->nocull ? all_list(s)
+                            : cell_list(&s->cam_grid, y / TILE * s->cam_grid.gx + x / TILE);
     for (k = 0; k < 3; k++) {
         o[k] = v->eye[k];
         d[k] = v->fwd[k] + px * v->right[k] + py * v->up[k];
@@ -494,8 +728,8 @@ static void shade_pixel(const scene *s, const settings *st, const view *v, int x
     }
     if (st->split && x == w / 2) {
         rgb[0] = rgb[1] = rgb[2] = 1;
-    } else if (!trace(s, st, dbl, alt, 0, -1, extra, o, d, HUGE_VAL, &hit, sum)) {
-        double g = 0.5 + 0.5 * d[2] / sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    } else if (!nearest(s, st, dbl, alt, extra, o, d, cands, &hit, sum)) {
+        double g = 0.5 + 0.5 * d[2] / sqrt(dot3(d, d));
         rgb[0] = 0.55 + 0.25 * g, rgb[1] = 0.65 + 0.25 * g, rgb[2] = 0.8 + 0.2 * g;
         if (st->view != VIEW_SHADE) rgb[0] = rgb[1] = rgb[2] = 0;
     } else if (sum->hits++, st->view == VIEW_NORMALS) {
@@ -505,17 +739,16 @@ static void shade_pixel(const scene *s, const settings *st, const view *v, int x
     } else {
         const object *ob = &s->obj[hit.obj];
         double p[3], l[3], len = 0, ndotl = 0, lit, eps, big = 0;
-        const unsigned no_extras = CYL_NO_NORMAL | CYL_NO_ERRBOUND;
-        int skip, blocked = 0;
         for (k = 0; k < 3; k++) {
             p[k] = o[k] + hit.t * d[k];
             l[k] = s->light[k] - p[k];
             len += l[k] * l[k];
             ndotl += hit.n[k] * l[k];
-            big = fmax(big, fabs(p[k]));
+            big = fabs(p[k]) > big ? fabs(p[k]) : big;
         }
         lit = ndotl > 0 ? ndotl / sqrt(len) : 0; /* the normal faces the eye: two-sided */
         if (lit > 0 && st->shadows) {
+            int skip, blk = 0;
             eps = SHADOW_OFFSET_R * (dbl ? ob->cd.r : (double)ob->cf.r) + SHADOW_OFFSET_ULPS * big;
             for (k = 0; k < 3; k++) {
                 p[k] += eps * hit.n[k];
@@ -528,14 +761,14 @@ static void shade_pixel(const scene *s, const settings *st, const view *v, int x
                        ? hit.obj : -1;
             if (*blocker >= 0 && *blocker != skip) {
                 sum->calls++;
-                blocked = occluded_one(s, *blocker, dbl, object_opts(s, *blocker, st) |
-                                       no_extras, p, l, 1.0) > 0;
+                blk = occluded_one(s, *blocker, dbl, object_opts(s, *blocker, st) |
+                                   CYL_NO_NORMAL | CYL_NO_ERRBOUND, p, l, 1.0) > 0;
             }
-            if (blocked) sum->rays++;
-            else
-                *blocker = (blocked = trace(s, st, dbl, 0, 1, skip, no_extras, p, l, 1.0, &shadow,
-                                            sum)) ? shadow.obj : -1;
-            if (blocked) lit = 0;
+            if (blk) sum->rays++;
+            else if (!blocked(s, st, dbl, p, l, light_list(s, st, p, l), skip, blocker, sum))
+                *blocker = -1;
+            else blk = 1;
+            if (blk) lit = 0;
         }
         for (k = 0; k < 3; k++) {
             rgb[k] = ob->rgb[k] * (0.18 + 0.82 * lit);
@@ -543,7 +776,7 @@ static void shade_pixel(const scene *s, const settings *st, const view *v, int x
         }
     }
     for (k = 0; k < 3; k++) /* gamma 2 */
-        out[k] = (unsigned char)(255.0 * sqrt(fmin(1.0, fmax(0.0, rgb[k]))) + 0.5);
+        out[k] = (unsigned char)(255.0 * sqrt(clamp01(rgb[k])) + 0.5);
 }
 
 typedef struct job {
@@ -567,14 +800,16 @@ static void *render_rows(void *arg)
 }
 
 /* Traces one frame on nthreads threads (interleaved rows) and returns the summed stats. */
-static stats render(const scene *s, const settings *st, image *img, int nthreads)
+static stats render(scene *s, const settings *st_in, image *img, int nthreads)
 {
     pthread_t th[MAX_THREADS];
     job jobs[MAX_THREADS];
     view v;
     stats sum;
+    settings st_copy = *st_in, *st = &st_copy;
     int i;
     make_view(&s->cam, (double)img->w / img->h, &v);
+    if (!st->nocull && camera_build(s, &v, img->w, img->h)) st->nocull = 1; /* out of memory */
     memset(&sum, 0, sizeof sum);
     for (i = 0; i < nthreads; i++) {
         jobs[i].s = s, jobs[i].st = st, jobs[i].v = &v, jobs[i].img = img;
@@ -595,12 +830,14 @@ static stats render(const scene *s, const settings *st, image *img, int nthreads
     return sum;
 }
 
-static double now(void)
+static double clock_seconds(clockid_t id)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(id, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
+
+static double now(void) { return clock_seconds(CLOCK_MONOTONIC); }
 
 static int precise_available(void)
 {
@@ -795,7 +1032,7 @@ int main(int argc, char **argv)
     const char *name;
     int headless = 0, w = 640, h = 480, i, rc = 0;
     long bench = 0, frames = 0, nthreads = sysconf(_SC_NPROCESSORS_ONLN);
-    settings st = {0, CAPS_SCENE, 0, 1, VIEW_SHADE, 0};
+    settings st = {0, CAPS_SCENE, 0, 1, VIEW_SHADE, 0, 0};
     scene s;
     app a;
     for (i = 1; i < argc; i++) {
@@ -806,6 +1043,7 @@ int main(int argc, char **argv)
         else if (!strcmp(arg, "--precise")) st.precise = 1;
         else if (!strcmp(arg, "--no-shadows")) st.shadows = 0;
         else if (!strcmp(arg, "--split")) st.split = 1;
+        else if (!strcmp(arg, "--no-cull")) st.nocull = 1;
         else if (!strcmp(arg, "--bench")) {
             bench = 60;
             if (next && next[0] != '-' && atol(next) > 0) bench = atol(argv[++i]);
@@ -842,19 +1080,24 @@ int main(int argc, char **argv)
         if (bench) { /* orbit a full turn so that no single view decides the figure */
             long f, rays = 0, calls = 0;
             camera home = s.cam;
+            double cpu0;
             sum = render(&s, &st, &img, (int)nthreads); /* warm-up */
             t0 = now();
+            cpu0 = clock_seconds(CLOCK_PROCESS_CPUTIME_ID);
             for (f = 0; f < bench; f++) {
                 s.cam.yaw = home.yaw + 360.0 * (double)f / (double)bench;
                 stats one = render(&s, &st, &img, (int)nthreads);
                 rays += one.rays, calls += one.calls;
             }
             secs = (now() - t0) / (double)bench;
+            cpu0 = (clock_seconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0) / (double)bench;
             sum.rays = rays / bench;
             s.cam = home;
             describe(line, sizeof line, name, &st, sum, secs);
-            printf("bench %dx%d, %ld frames, %ld threads: %s | %.2f library calls per ray\n", w,
-                   h, bench, nthreads, line, (double)calls / (double)rays);
+            /* CPU time per frame says what idle cores would give on a shared, busy machine */
+            printf("bench %dx%d, %ld frames, %ld threads: %s | %.2f library calls per ray | "
+                   "%ld rays per frame | %.1f ms CPU per frame\n", w, h, bench, nthreads, line,
+                   (double)calls / (double)rays, rays / bench, 1e3 * cpu0);
         }
         if (headless) {
             t0 = now();
@@ -879,8 +1122,6 @@ int main(int argc, char **argv)
         if (rc == 2) fprintf(stderr, "viewer: no window could be opened (no display?)\n");
         free(a.img.rgb);
     }
-    free(s.obj);
-    free(s.order);
-    free(s.node);
+    scene_free(&s);
     return rc;
 }
