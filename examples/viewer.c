@@ -926,6 +926,7 @@ static int run_window(app *a, const char *name, int w, int h, int nthreads, long
     GLuint tex;
     long frame = 0;
     char title[256];
+    double start;
     if (!glfwInit()) return 2;
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
     win = glfwCreateWindow(w, h, name, NULL, NULL);
@@ -948,6 +949,7 @@ static int run_window(app *a, const char *name, int w, int h, int nthreads, long
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glEnable(GL_TEXTURE_2D);
     a->dirty = 1;
+    start = now();
     while (!glfwWindowShouldClose(win)) {
         int fw, fh;
         glfwGetFramebufferSize(win, &fw, &fh);
@@ -996,11 +998,18 @@ static int run_window(app *a, const char *name, int w, int h, int nthreads, long
                     printf("window %dx%d read back into %s\n", fw, fh, readback);
                 }
                 glfwSwapBuffers(win);
+                printf("window: %ld frames in %.2f s (%.1f fps with display), last: %s\n", frame,
+                       now() - start, (double)frame / (now() - start), title);
                 break;
             }
             glfwSwapBuffers(win);
         }
-        glfwWaitEvents();
+        if (frames) { /* scripted: render frame after frame until the count is reached */
+            a->dirty = 1;
+            glfwPollEvents();
+        } else {
+            glfwWaitEvents();
+        }
     }
     glDeleteTextures(1, &tex);
     glfwDestroyWindow(win);

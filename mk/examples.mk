@@ -57,10 +57,12 @@ TEST_PREREQS += $(EX_PROGS)
 RUNNERS      += $(EX_DIR)/test_examples
 
 # Opens the window when a display is there and the window opens (exit code 2 means it did
-# not); otherwise renders headless and says where the PNG is.
+# not); otherwise renders headless and says where the PNG is. DEMO_ARGS go to the windowed
+# viewer, e.g. `make demo DEMO_ARGS="--frames 30"` quits after 30 frames (for scripts).
+DEMO_ARGS ?=
 demo: deps examples
 	@if [ -n "$${DISPLAY:-}$${WAYLAND_DISPLAY:-}" ]; then \
-	  $(EX_DIR)/viewer $(EX_DEFAULT); rc=$$?; [ $$rc -ne 2 ] && exit $$rc; \
+	  $(EX_DIR)/viewer $(DEMO_ARGS) $(EX_DEFAULT); rc=$$?; [ $$rc -ne 2 ] && exit $$rc; \
 	fi; \
 	$(EX_DIR)/viewer --headless --size 640x480 --out $(EX_DEMO_PNG) $(EX_DEFAULT) && \
 	echo "no display: the default scene is rendered in $(EX_DEMO_PNG)"
