@@ -148,6 +148,11 @@
    Measured against the exact MPFR reference of ref/ on ten case families (`make report`,
    bench/REPORT.md; `make test` asserts the targets on a fixed-seed sample): t_err contained
    the exact t in every hit; see bench/REPORT.md for ulps per family and the timing ratios.
+   Extreme ratios: when r is below 2^-31 (float) or 2^-435 (double) of |o − c|, r² underflows
+   in the frame: the wall test then compares distances linearly, may misjudge rays within the
+   rounding of o − c of the axis, and reports t_err = +inf; when h/2 exceeds |o − c| and r by
+   more than 2^123 (float) or 2^1019 (double), the cap planes are computed at a coarser scale
+   of their own and cap hits carry t_err = +inf.
    Conditioning: near tangency a relative input change ε moves t by about √ε·r/(|d|·sin);
    on the default path the rounding of D (about u·|o − c|/r relative to e) decides hit or
    miss for origins beyond about 1/(256u) radii; CYL_PRECISE removes that term.
