@@ -3,6 +3,8 @@
 #   make demo          open the viewer on the default scene (headless PNG without a display)
 #   make examples-ref  re-render the reference PNGs (after a reviewed, intended change)
 #   make examples-img  re-render the README images (docs/img/*.png)
+#   make examples-bench  the frames-per-second figures of docs/examples.md
+#   make ci-viewer     the windowed viewer under Xvfb against the headless render (CI)
 EX_DIR      := $(BUILD)/examples
 EX_SCENES   := $(wildcard examples/scenes/*.txt)
 EX_PKGS     := glfw3 gl libpng
@@ -50,7 +52,7 @@ $(EX_DIR)/test_examples: examples/test_examples.c examples/png_io.h $(BUILD)/gcc
 
 EX_PROGS := $(EX_DIR)/viewer $(EX_DIR)/viewer.clang.ok $(EX_DIR)/pngcmp $(EX_DIR)/minimal \
             $(EX_DIR)/minimal-clang $(EX_DIR)/minimal-cxx
-.PHONY: examples demo examples-ref examples-img ci-viewer
+.PHONY: examples demo examples-ref examples-img ci-viewer examples-bench
 examples: $(EX_PROGS)
 
 TEST_PREREQS += $(EX_PROGS)
@@ -79,3 +81,11 @@ examples-img: $(EX_DIR)/viewer
 
 ci-viewer:
 	@bash scripts/ci-viewer.sh
+
+# The figures of docs/examples.md: every scene at 640x480 with shadows (the viewer's default
+# settings), frames and rays per second over a full orbit, plus CPU time per frame.
+EX_BENCH_FRAMES ?= 60
+examples-bench: $(EX_DIR)/viewer
+	@for s in $(EX_SCENES); do $(EX_DIR)/viewer --bench $(EX_BENCH_FRAMES) $$s || exit 1; done
+	@$(EX_DIR)/viewer --bench $(EX_BENCH_FRAMES) --double $(EX_DEFAULT)
+	@$(EX_DIR)/viewer --bench $(EX_BENCH_FRAMES) --threads 1 $(EX_DEFAULT)
