@@ -100,7 +100,9 @@
      CYL_NO_DOUBLE         undefined                    leave out cyld_*: no double anywhere
      CYL_NO_PRECISE        undefined                    compile out the precise tier
                                                         (CYL_PRECISE gives CYL_E_OPTION)
-     CYL_DEF               static inline                qualifier of every function
+     CYL_DEF               static inline                qualifier of every public function
+     CYL_INTERNAL          static inline, forced inline qualifier of the internal functions
+                           except under -Os
      CYL_SQRTF, CYL_SQRT   __builtin_sqrt[f] (gcc,      square roots; <math.h> is included
                            clang), else sqrt[f]          only when a non-builtin default is used
      CYL_FMAF, CYL_FMA     __builtin_fma[f], else fma[f] fused multiply-add; must be correctly
@@ -186,15 +188,19 @@
 /* 0: every type in its own precision. 16 and 32 (ISO/IEC TS 18661-3, e.g. gcc with
    AVX512-FP16 in GNU modes) only widen _Float16: float and double still round to themselves. */
 #if !defined(FLT_EVAL_METHOD) || !(FLT_EVAL_METHOD == 0 || FLT_EVAL_METHOD == 16 || FLT_EVAL_METHOD == 32)
-#error "cylinder_isect.h: needs FLT_EVAL_METHOD == 0 (no excess precision, e.g. x87); use SSE2 or a target with native float/double arithmetic"
+#error "cylinder_isect.h: needs FLT_EVAL_METHOD == 0 (no excess precision, e.g. x87, or GCC's ISO mode on s390x); use SSE2, or -fexcess-precision=fast / -std=gnu99 where float is native"
 #endif
 
 #ifndef CYL_DEF
 #define CYL_DEF static inline
 #endif
 /* Internal functions are inlined into the public ones even when large, so that options passed
-   as constants fold away inside them (the public functions stay CYL_DEF, the caller's choice). */
-#if defined(__GNUC__) || defined(__clang__)
+   as constants fold away inside them (the public functions stay CYL_DEF, the caller's choice).
+   Size-optimised builds (-Os) keep the compiler's own choice: options still fold there, and
+   forcing cost Cortex-M4F up to 3.7x the code (make sizes). CYL_INTERNAL overrides both. */
+#if defined(CYL_INTERNAL)
+#define CYL__INL CYL_INTERNAL
+#elif (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE_SIZE__)
 #define CYL__INL static inline __attribute__((always_inline))
 #else
 #define CYL__INL static inline
@@ -1056,8 +1062,11 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     for (k = 0; k < n; k++) {
         CYL__R tu = f->e ? CYL__P(scale)(c[k].t, f->e) : c[k].t;
         if (tu >= ray->tmin && tu <= ray->tmax && CYL__P(finite)(tu)) {
-            out[kept] = c[k];
+            /* field by field: a struct copy becomes a memcpy call at -Os on some targets */
+            out[kept].t = c[k].t;
             out[kept].tu = tu;
+            out[kept].part = c[k].part;
+            out[kept].flags = c[k].flags;
             kept++;
         }
     }
