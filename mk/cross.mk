@@ -18,6 +18,7 @@ sizes:
 	@$(CROSS_ENV) bash scripts/cross-sizes.sh
 	@$(CROSS_ENV) bash scripts/cross-lint.sh misra >/dev/null || echo "sizes: note: misra-check fails, see make misra-check"
 	@$(CROSS_ENV) bash scripts/cross-lint.sh doc
+	@$(MAKE) --no-print-directory readme
 
 cross-test: unity
 	@$(CROSS_ENV) bash scripts/cross-test.sh $(BUILD) $(UNITY_SRC)
