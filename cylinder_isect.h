@@ -901,7 +901,8 @@ CYL__INL int CYL__P(side)(const CYL__P(frame) *f, CYL__R t, CYL__R tl)
     CYL__P(acc_prod)(&b, t, f->ad);
     b.lo += t * f->adl + tl * f->ad + f->awl;
     CYL__P(acc_add)(&b, f->aw);
-    lo = hi = b;
+    lo.hi = hi.hi = b.hi;
+    lo.lo = hi.lo = b.lo;
     CYL__P(acc_prod)(&lo, f->H, f->na);   /* v + H, times |a| */
     lo.lo += f->H * f->nal;
     CYL__P(acc_prod)(&hi, -f->H, f->na);  /* v − H, times |a| */
@@ -1129,8 +1130,12 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, un
                             const CYL__N(ray) *ray, CYL__N(hit) *hit)
 {
     CYL__R no[3] = {0, 0, 0}, y[3] = {0, 0, 0}, ys = 0, v, face = 1;
-    CYL__P(cand) cc = *cin, *c = &cc;
+    CYL__P(cand) cc, *c = &cc;
     int i;
+    cc.t = cin->t; /* field by field: no memcpy call at -Os */
+    cc.tu = cin->tu;
+    cc.part = cin->part;
+    cc.flags = cin->flags;
     if (!f->precise && !f->coarse && c->part == CYL_SIDE && !(c->flags & CYL_F_TANGENT)) {
         /* default path: one correction of the returned root with the compensated residual
            (the precise path corrected both in the solver, to decide the rim); the step is a
