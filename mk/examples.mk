@@ -78,6 +78,8 @@ examples-img: $(EX_DIR)/viewer
 	@mkdir -p docs/img
 	@for s in $(EX_SCENES); do n=$$(basename $$s .txt); \
 	  $(EX_DIR)/viewer --headless --size 640x480 --out docs/img/$$n.png $$s || exit 1; done
+	@$(EX_DIR)/viewer --headless --size 640x480 --view error --split \
+	  --out docs/img/pipes-error-split.png examples/scenes/pipes.txt
 
 ci-viewer:
 	@bash scripts/ci-viewer.sh
