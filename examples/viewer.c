@@ -4,8 +4,8 @@
  *
  * Every pixel is traced on the CPU with the library, on all cores (pthreads), and shown in a
  * GLFW window as a texture. Rays test only the cylinders that their cell of a frustum grid
- * lists (see "culling" below) and that pass a bounding-tube pretest. Scenes are text files, one cylinder per line (see
- * examples/scenes/make_scenes.py or docs/examples.md).
+ * lists (see "culling" below) and that pass a bounding-tube pretest. Scenes are text files,
+ * one cylinder per line (see examples/scenes/make_scenes.py or docs/examples.md).
  *
  * Mouse: drag to orbit, scroll to zoom.
  * Keys:  F float/double   C caps (scene, all open, all capped)   P CYL_PRECISE
@@ -27,7 +27,7 @@
  *   --view shade|normals|error
  *   --threads N         default: all online cores
  *   --no-cull           test every cylinder for every ray (the culled image must be the same)
- *   --frames N          windowed: quit after N frames
+ *   --frames N          windowed: render N frames (continuously), print the rate, quit
  *   --readback FILE     windowed: read the last frame back with glReadPixels into FILE (PNG)
  * Exit codes: 0 ok, 1 usage or scene error, 2 no window could be opened.
  */
