@@ -851,7 +851,8 @@ static void describe(char *buf, size_t n, const char *name, const settings *st, 
 {
     int len = snprintf(buf, n, "%s | %s | caps %s%s%s%s | %s%s | %.1f fps | %.2f Mrays/s",
                        name, st->use_double ? "double" : "float", caps_name[st->caps],
-                       st->precise ? " | precise" : "", st->shadows ? " | shadows" : "",
+                       st->precise ? " | precise" : "",
+                       st->shadows && st->view == VIEW_SHADE ? " | shadows" : "",
                        st->split ? " | split: library | literal" : "", view_name[st->view],
                        precise_available() ? "" : " (precise n/a)", 1 / secs,
                        1e-6 * (double)sum.rays / secs);
