@@ -342,28 +342,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__RDIR 16.0f
 #define CYL__RLEN 65536.0f
 #define CYL__RCOARSE 4.656612873077393e-10f /* 2^-31 */
-#include CYL_HEADER_FILENAME
-#undef CYL__BODY
-#undef CYL__R
-#undef CYL__UINT
-#undef CYL__N
-#undef CYL__P
-#undef CYL__C
-#undef CYL__SQRTR
-#undef CYL__FMAR
-#undef CYL__FABSR
-#undef CYL__U
-#undef CYL__MAXR
-#undef CYL__MINR
-#undef CYL__MANT
-#undef CYL__EBIAS
-#undef CYL__EMASK
-#undef CYL__TWO_MANT
-#undef CYL__TANG
-#undef CYL__PARA
-#undef CYL__RDIR
-#undef CYL__RLEN
-#undef CYL__RCOARSE
+#include CYL_HEADER_FILENAME /* the body #undefs the parameters above */
 #endif
 
 /* ---- double instance ---- */
@@ -389,28 +368,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__RDIR 18446744073709551616.0
 #define CYL__RLEN 3.402823669209384634633746e38
 #define CYL__RCOARSE 1.1270725851789228e-131 /* 2^-435 */
-#include CYL_HEADER_FILENAME
-#undef CYL__BODY
-#undef CYL__R
-#undef CYL__UINT
-#undef CYL__N
-#undef CYL__P
-#undef CYL__C
-#undef CYL__SQRTR
-#undef CYL__FMAR
-#undef CYL__FABSR
-#undef CYL__U
-#undef CYL__MAXR
-#undef CYL__MINR
-#undef CYL__MANT
-#undef CYL__EBIAS
-#undef CYL__EMASK
-#undef CYL__TWO_MANT
-#undef CYL__TANG
-#undef CYL__PARA
-#undef CYL__RDIR
-#undef CYL__RLEN
-#undef CYL__RCOARSE
+#include CYL_HEADER_FILENAME /* the body #undefs the parameters above */
 #endif
 
 #endif /* CYLINDER_ISECT_H */
@@ -1293,5 +1251,28 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
     }
     return cy;
 }
+
+/* This instance's parameters, so that the next one can define its own. */
+#undef CYL__BODY
+#undef CYL__R
+#undef CYL__UINT
+#undef CYL__N
+#undef CYL__P
+#undef CYL__C
+#undef CYL__SQRTR
+#undef CYL__FMAR
+#undef CYL__FABSR
+#undef CYL__U
+#undef CYL__MAXR
+#undef CYL__MINR
+#undef CYL__MANT
+#undef CYL__EBIAS
+#undef CYL__EMASK
+#undef CYL__TWO_MANT
+#undef CYL__TANG
+#undef CYL__PARA
+#undef CYL__RDIR
+#undef CYL__RLEN
+#undef CYL__RCOARSE
 
 #endif /* CYL__BODY */
