@@ -1084,6 +1084,18 @@ CYL__INL CYL__R CYL__P(bound)(const CYL__P(frame) *f, const CYL__P(cand) *c,
     return d * safe;
 }
 
+/* Some unit vector orthogonal to the axis: the normal of last resort, when the computed one
+   vanished (r underflowed in the frame). */
+CYL__INL void CYL__P(radial)(const CYL__P(frame) *f, CYL__R no[3])
+{
+    CYL__R z[3] = {0, 0, 0}, len;
+    int i;
+    z[CYL__P(abs)(f->a[0]) <= CYL__P(abs)(f->a[1]) ? 0 : 1] = 1;
+    CYL__P(cross)(z, f->a, no);
+    len = CYL__SQRTR(CYL__P(dot)(no, no));
+    for (i = 0; i < 3; i++) no[i] /= len;
+}
+
 CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, unsigned opts,
                             const CYL__N(ray) *ray, CYL__N(hit) *hit)
 {
@@ -1138,11 +1150,7 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, un
                 CYL__R inv = 1 / CYL__SQRTR(len2);
                 for (i = 0; i < 3; i++) no[i] *= inv;
             } else { /* only when r underflowed in the frame: any radial direction */
-                CYL__R z[3] = {0, 0, 0};
-                z[CYL__P(abs)(f->a[0]) <= CYL__P(abs)(f->a[1]) ? 0 : 1] = 1;
-                CYL__P(cross)(z, f->a, no);
-                len2 = CYL__P(dot)(no, no);
-                for (i = 0; i < 3; i++) no[i] /= CYL__SQRTR(len2);
+                CYL__P(radial)(f, no);
             }
             if (f->coarse) { /* y is mostly rounding there: at least keep n ⊥ a */
                 CYL__R k = CYL__P(dot)(no, f->a) / f->aa, len;
@@ -1151,11 +1159,7 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, un
                 if (len > 0) {
                     for (i = 0; i < 3; i++) no[i] /= len;
                 } else {
-                    CYL__R z[3] = {0, 0, 0};
-                    z[CYL__P(abs)(f->a[0]) <= CYL__P(abs)(f->a[1]) ? 0 : 1] = 1;
-                    CYL__P(cross)(z, f->a, no);
-                    len = CYL__SQRTR(CYL__P(dot)(no, no));
-                    for (i = 0; i < 3; i++) no[i] /= len;
+                    CYL__P(radial)(f, no);
                 }
             }
             face = CYL__P(dot)(no, f->d) > 0 ? -1 : 1;
