@@ -14,7 +14,7 @@
        cyld_hit hit;
        int rc = cyld_intersect(&ray, &cyl, CYL_CAPS, &hit);   // nearest hit of the capped solid
        if (rc == CYL_HIT)
-           printf("t = %.17g +- %.2g\n", hit.t, hit.t_err);  // t = 4.1339745962155616 +- 8.3e-15
+           printf("t = %.17g +- %.2g\n", hit.t, hit.t_err);  // t = 4.1339745962155616 +- 2.1e-14
        else if (rc < 0)
            printf("error: %s\n", cyl_strerror(rc));
 
@@ -205,6 +205,12 @@
 #else
 #define CYL__INL static inline
 #endif
+/* The compensated solver, which answers what the fast path hands over, out of line. */
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE_SIZE__)
+#define CYL__SLOW static __attribute__((noinline, unused))
+#else
+#define CYL__SLOW static inline
+#endif
 #ifndef CYL_HEADER_FILENAME
 #define CYL_HEADER_FILENAME "cylinder_isect.h"
 #endif
@@ -302,6 +308,44 @@
 #endif
 #endif
 
+/* Fast path arithmetic. A hardware FMA (the compiler says so) lets the fast path form the
+   cross products with Kahan's algorithm; without one it uses plain products and wider bounds. */
+#if defined(__FP_FAST_FMA) || defined(__FMA__) || defined(__aarch64__) || defined(_M_ARM64)
+#define CYL__DKAHAN 1
+#else
+#define CYL__DKAHAN 0
+#endif
+#if defined(__FP_FAST_FMAF) || defined(__FMA__) || defined(__aarch64__) || defined(_M_ARM64) || \
+    (defined(__ARM_FEATURE_FMA) && defined(__ARM_FP) && (__ARM_FP & 4))
+#define CYL__FKAHAN 1
+#else
+#define CYL__FKAHAN 0
+#endif
+#if CYL__DKAHAN
+#define CYL__DMADD(a, b, c) CYL_FMA(a, b, c)
+#else
+#define CYL__DMADD(a, b, c) ((a) * (b) + (c))
+#endif
+#if CYL__FKAHAN
+#define CYL__FMADD(a, b, c) CYL_FMAF(a, b, c)
+#else
+#define CYL__FMADD(a, b, c) ((a) * (b) + (c))
+#endif
+/* CYL_FLOAT_WIDE: the float API's fast path computes in double, where double is hardware. */
+#ifndef CYL_FLOAT_WIDE
+#if !defined(CYL_NO_DOUBLE) &&                                                                 \
+    (defined(__x86_64__) || defined(_M_X64) || defined(__aarch64__) || defined(_M_ARM64) ||      \
+     (defined(__ARM_FP) && (__ARM_FP & 8)) || (defined(__riscv_flen) && __riscv_flen >= 64) || \
+     defined(__s390x__) || defined(__powerpc64__))
+#define CYL_FLOAT_WIDE 1
+#else
+#define CYL_FLOAT_WIDE 0
+#endif
+#endif
+#if CYL_FLOAT_WIDE && defined(CYL_NO_DOUBLE)
+#error "cylinder_isect.h: CYL_FLOAT_WIDE computes in double, which CYL_NO_DOUBLE excludes"
+#endif
+
 CYL_DEF const char *cyl_strerror(int code)
 {
     switch (code) {
@@ -342,6 +386,31 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__RDIR 16.0f
 #define CYL__RLEN 65536.0f
 #define CYL__RCOARSE 4.656612873077393e-10f /* 2^-31 */
+#if CYL_FLOAT_WIDE
+#define CYL__L double
+#define CYL__LU (DBL_EPSILON * 0.5)
+#define CYL__LMIN DBL_MIN
+#define CYL__LMAX DBL_MAX
+#define CYL__LSQRT(x) CYL_SQRT(x)
+#define CYL__LABS(x) CYL__FABS(x)
+#define CYL__LFMA(a, b, c) CYL_FMA(a, b, c)
+#define CYL__LMADD(a, b, c) CYL__DMADD(a, b, c)
+#define CYL__LKAHAN CYL__DKAHAN
+#define CYL__LHI 2.037035976334486e90 /* 2^300 */
+#define CYL__WIDE 1
+#else
+#define CYL__L float
+#define CYL__LU (FLT_EPSILON * 0.5f)
+#define CYL__LMIN FLT_MIN
+#define CYL__LMAX FLT_MAX
+#define CYL__LSQRT(x) CYL_SQRTF(x)
+#define CYL__LABS(x) CYL__FABSF(x)
+#define CYL__LFMA(a, b, c) CYL_FMAF(a, b, c)
+#define CYL__LMADD(a, b, c) CYL__FMADD(a, b, c)
+#define CYL__LKAHAN CYL__FKAHAN
+#define CYL__LHI 1099511627776.0f /* 2^40 */
+#define CYL__WIDE 0
+#endif
 #include CYL_HEADER_FILENAME /* the body #undefs the parameters above */
 #endif
 
@@ -368,6 +437,17 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__RDIR 18446744073709551616.0
 #define CYL__RLEN 3.402823669209384634633746e38
 #define CYL__RCOARSE 1.1270725851789228e-131 /* 2^-435 */
+#define CYL__L double
+#define CYL__LU (DBL_EPSILON * 0.5)
+#define CYL__LMIN DBL_MIN
+#define CYL__LMAX DBL_MAX
+#define CYL__LSQRT(x) CYL_SQRT(x)
+#define CYL__LABS(x) CYL__FABS(x)
+#define CYL__LFMA(a, b, c) CYL_FMA(a, b, c)
+#define CYL__LMADD(a, b, c) CYL__DMADD(a, b, c)
+#define CYL__LKAHAN CYL__DKAHAN
+#define CYL__LHI 2.037035976334486e90 /* 2^300 */
+#define CYL__WIDE 0
 #include CYL_HEADER_FILENAME /* the body #undefs the parameters above */
 #endif
 
@@ -595,6 +675,12 @@ CYL__INL int CYL__P(check)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     rc = (opts & CYL_TRUSTED) ? 0 : CYL__P(validate)(ray, cyl);
     if (!rc && (opts & ~(unsigned)CYL__SUPPORTED)) rc = CYL_E_OPTION;
     return rc;
+}
+
+/* The fast path serves every valid option set but CYL_PRECISE. */
+CYL__INL int CYL__P(fastok)(unsigned opts)
+{
+    return !(opts & ~(unsigned)CYL__SUPPORTED) && !(opts & CYL_PRECISE);
 }
 
 /* ------------------------------------------------------------------ the solver */
@@ -1193,26 +1279,390 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, un
     }
 }
 
+/* ------------------------------------------------------------------ the fast path */
+
+/* Options without CYL_PRECISE run this first: the plain formulas of the solver above (the
+   geometric discriminant, the stable root pair, the cap planes), once, in type CYL__L (double
+   for the float API where double is hardware, see CYL_FLOAT_WIDE; else the API's own type).
+   What it does not do is compensate: o − c, a·w and the coefficients carry their roundings,
+   so a decision within a few ulps of its threshold (tangency, rim, tmin/tmax) can go either
+   way, and t is good to a few ulps where the case is well-conditioned. t_err stays rigorous:
+   an a-priori bound on every rounding that enters the returned root or cap crossing (standard
+   model, Higham ch. 3). Inputs outside the range where nothing can overflow or underflow are
+   first scaled by exact powers of two; the rest (invalid input, extreme ratios) go to the
+   solver above, which then answers alone.
+
+   Error model: each operation rounds with relative error <= u; an FMA once, a product and add
+   at most twice, so each bound holds with or without contraction. Bounds are first order; the
+   factor sf = 1 + 2^-6 covers the second-order terms and the rounding of the bound's own
+   arithmetic, LMIN terms cover underflow below the range check's floor. */
+typedef struct CYL__P(fx) { /* one crossing of the fast path */
+    CYL__L t;               /* frame t */
+    int sg;                 /* wall 0, low cap −1, high cap +1 */
+    int ok;                 /* the crossing exists */
+} CYL__P(fx);
+
+CYL__INL CYL__L CYL__P(labs)(CYL__L x) { return CYL__LABS(x); }
+CYL__INL CYL__L CYL__P(lmax3)(const CYL__L x[3])
+{
+    CYL__L p = CYL__P(labs)(x[0]), q = CYL__P(labs)(x[1]), z = CYL__P(labs)(x[2]);
+    p = p > q ? p : q;
+    return p > z ? p : z;
+}
+CYL__INL CYL__L CYL__P(ldot)(const CYL__L x[3], const CYL__L y[3])
+{
+    return CYL__LMADD(x[2], y[2], CYL__LMADD(x[1], y[1], x[0] * y[0]));
+}
+/* pq − rs. With a hardware FMA, Kahan's algorithm: relative error <= 2u (Jeannerod, Louvet,
+   Muller, Math. Comp. 82, 2013); without, the error is at most 2u(|pq| + |rs|)(1 + u). */
+CYL__INL CYL__L CYL__P(ldop)(CYL__L p, CYL__L q, CYL__L r, CYL__L s)
+{
+#if CYL__LKAHAN
+    CYL__L w = r * s;
+    return CYL__LFMA(p, q, -w) + CYL__LFMA(-r, s, w);
+#else
+    return p * q - r * s;
+#endif
+}
+
+/* Is the ray point at t on the disk |a × x| <= r|a|? y = m + t·s = a × x(t). */
+CYL__INL int CYL__P(fdisk)(const CYL__L m[3], const CYL__L s[3], CYL__L R2, CYL__L t)
+{
+    CYL__L y[3];
+    int i;
+    for (i = 0; i < 3; i++) y[i] = CYL__LMADD(t, s[i], m[i]);
+    return CYL__P(ldot)(y, y) <= R2;
+}
+
+#if !CYL__WIDE
+/* The cap crossing (sg·H|a| − a·w)/(a·d) to about an ulp (CYL__L is the API's type here): from
+   the exact o − c (TwoSum, times the frame's length scale lf), with a·w, a·d and |a| as double
+   words (Dot2; one correction of the square root), as the solver's slab forms it. The plain
+   quotient loses several ulps where H|a| and a·w nearly cancel. */
+CYL__INL CYL__R CYL__P(fcapt)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                             const CYL__R a[3], const CYL__R d[3], CYL__R H, const CYL__R lf[2],
+                             int sg)
+{
+    CYL__R wh[3], wl[3], aa, aal, na, nal, ad, adl, sH = (CYL__R)sg * H;
+    CYL__P(acc) sa, sw, sd, num;
+    int i;
+    for (i = 0; i < 3; i++) {
+        CYL__P(two_sum)(ray->o[i], -cyl->c[i], &wh[i], &wl[i]);
+        wh[i] = wh[i] * lf[0] * lf[1];
+        wl[i] = wl[i] * lf[0] * lf[1];
+    }
+    sa = CYL__P(dot_acc)(a, a);
+    aa = sa.hi + sa.lo;
+    aal = sa.lo - (aa - sa.hi);
+    na = CYL__SQRTR(aa);
+    nal = (CYL__FMAR(-na, na, aa) + aal) / (2 * na);
+    sw = CYL__P(dot_acc)(a, wh);
+    sw.lo += CYL__P(dot)(a, wl);
+    sd = CYL__P(dot_acc)(a, d);
+    ad = sd.hi + sd.lo;
+    adl = sd.lo - (ad - sd.hi);
+    num = CYL__P(acc_first)(sH, na);
+    num.lo += sH * nal - sw.lo;
+    CYL__P(acc_add)(&num, -sw.hi);
+    return CYL__P(div_dw)(num.hi, num.lo, ad, adl);
+}
+#endif
+
+/* want: 0 occluded (returns 1 or 0), 1 the nearest hit into hits[0], 2 every hit.
+   Returns -1 (nothing written) when the solver must answer. */
+CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                         int want, CYL__N(hit) *hits)
+{
+    const CYL__L u = CYL__LU, sf = (CYL__L)1 + (CYL__L)1 / 64, tiny = CYL__LMIN;
+    const CYL__L hi = CYL__LHI, lo = 1 / CYL__LHI;
+    CYL__L a[3], d[3], w[3], s[3], m[3], r, H, aa, dd, A, MM, R2, P, D, B = 0, C = 0, sq = 0;
+    CYL__L q = 0, Dp = 0, aw, ad, na, Hn, tsc = 1, vsc = 1, tw[2];
+    CYL__R lf[2] = {1, 1}; /* the frame's length scale, as two factors */
+    CYL__P(fx) c[2];
+    int i, k, caps = (opts & CYL_CAPS) != 0, hfin = cyl->h <= CYL__MAXR, tangent = 0;
+    int parallel, scaled = 0, swap = 0;
+
+    for (i = 0; i < 3; i++) {
+        a[i] = (CYL__L)cyl->a[i];
+        d[i] = (CYL__L)ray->d[i];
+        w[i] = (CYL__L)ray->o[i] - (CYL__L)cyl->c[i];
+    }
+    r = (CYL__L)cyl->r;
+    H = (CYL__L)cyl->h * (CYL__L)0.5;
+    for (;;) {
+        /* s = a × d with Kahan's products where the FMA is hardware (relative error 2u: rays
+           near the axis direction keep an accurate s), m = a × w plainly (its error is of the
+           order of the rounding of o − c anyway) */
+        s[0] = CYL__P(ldop)(a[1], d[2], a[2], d[1]);
+        s[1] = CYL__P(ldop)(a[2], d[0], a[0], d[2]);
+        s[2] = CYL__P(ldop)(a[0], d[1], a[1], d[0]);
+        m[0] = a[1] * w[2] - a[2] * w[1];
+        m[1] = a[2] * w[0] - a[0] * w[2];
+        m[2] = a[0] * w[1] - a[1] * w[0];
+        aa = CYL__P(ldot)(a, a);
+        dd = CYL__P(ldot)(d, d);
+        MM = CYL__P(ldot)(m, m);
+        R2 = r * r * aa;
+        /* The range check is the validation too: NaN, infinities, zero vectors and r, h <= 0
+           fail it. Inside it no quantity below overflows, and none that decides or bounds
+           anything underflows: they are products of |a|²|d|² and |m|² + r²|a|². */
+        if (aa * dd >= lo && aa * dd <= hi && MM + R2 <= hi && R2 >= lo && r > 0 &&
+            cyl->h > 0 && ray->tmin <= ray->tmax && (H * aa <= hi || !hfin))
+            break;
+        if (scaled++ || CYL__P(validate)(ray, cyl)) return -1;
+        {
+            /* exact power-of-two scaling: max(|w|, r) and the largest components of a and d
+               into [1, 2); scaling d changes the unit of t */
+            CYL__R f[2];
+            CYL__L mw = CYL__P(lmax3)(w);
+            int ev = 0, et, kdx = CYL__P(ilogb)(CYL__P(amax3)(ray->d));
+            if (!(mw <= CYL__LMAX)) return -1;
+            if (!CYL__WIDE) { /* every float length is in range in double */
+                ev = CYL__P(ilogb)((CYL__R)(mw > r ? mw : r));
+                CYL__P(pow2pair)(-ev, f);
+                lf[0] = f[0];
+                lf[1] = f[1];
+                for (i = 0; i < 3; i++) w[i] = w[i] * (CYL__L)f[0] * (CYL__L)f[1];
+                r = r * (CYL__L)f[0] * (CYL__L)f[1];
+                H = H * (CYL__L)f[0] * (CYL__L)f[1];
+            }
+            CYL__P(pow2pair)(-CYL__P(ilogb)(CYL__P(amax3)(cyl->a)), f);
+            for (i = 0; i < 3; i++) a[i] = a[i] * (CYL__L)f[0] * (CYL__L)f[1];
+            CYL__P(pow2pair)(-kdx, f);
+            for (i = 0; i < 3; i++) d[i] = d[i] * (CYL__L)f[0] * (CYL__L)f[1];
+            et = ev - kdx;
+            if (et < 1 - CYL__EBIAS || et > CYL__EBIAS || ev < 1 - CYL__EBIAS ||
+                ev > CYL__EBIAS)
+                return -1;
+            tsc = (CYL__L)CYL__P(exp2i)(et);
+            vsc = (CYL__L)CYL__P(exp2i)(ev);
+        }
+    }
+    A = CYL__P(ldot)(s, s);
+    /* sin²(angle) = A / (|a|²|d|²) against the parallel tolerance */
+    parallel = A <= (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * aa * dd;
+    aw = CYL__P(ldot)(a, w);
+    ad = CYL__P(ldot)(a, d);
+    na = CYL__LSQRT(aa);
+    Hn = hfin ? H * na : 0;
+    c[0].ok = c[1].ok = 0;
+    c[0].sg = c[1].sg = 0;
+    c[0].t = c[1].t = tw[0] = tw[1] = 0;
+    P = D = 0;
+    if (!parallel) {
+        CYL__L r2 = r * r, band, ta, tb;
+        /* D = r²A − P² = A(r² − ρ²), P = w·s: the wall is crossed iff D >= 0 */
+        P = CYL__P(ldot)(w, s);
+        D = CYL__LMADD(r2, A, -(P * P));
+        band = (CYL__L)CYL__TANG * r2 * A;
+        if (D >= -band) {
+            tangent = D <= band;
+            if (!tangent || !(opts & CYL_NO_TANGENT)) {
+                /* roots of A t² + 2B t + C, B = m·s, C = |m|² − r²|a|², B² − AC = |a|²D */
+                B = CYL__P(ldot)(m, s);
+                C = MM - R2;
+                Dp = D > 0 ? D : 0;
+                sq = CYL__LSQRT(aa * Dp);
+                q = -(B + (B < 0 ? -sq : sq));
+                if (!(CYL__P(labs)(q) >= tiny)) return -1; /* a contact where B = D = 0 */
+                ta = q / A;
+                tb = C / q;
+                swap = ta > tb;
+                tw[0] = swap ? tb : ta;
+                tw[1] = swap ? ta : tb;
+                for (k = 0; k < 2; k++) {
+                    /* the root against the cap planes: v|a| = a·w + t·a·d against ±H|a| */
+                    CYL__L vn = CYL__LMADD(tw[k], ad, aw);
+                    c[k].sg = !hfin || CYL__P(labs)(vn) <= Hn ? 0 : (vn < 0 ? -1 : 1);
+                    c[k].t = tw[k];
+                }
+                /* the roots are ordered, so the ray runs from one side to the other: the solid
+                   is entered through the cap of side 0 (or the wall), left through that of
+                   side 1 */
+                for (k = 0; k < 2; k++) {
+                    if (!c[k].sg) {
+                        c[k].ok = 1;
+                    } else if (caps && c[0].sg != c[1].sg) {
+                        c[k].t = ((CYL__L)c[k].sg * Hn - aw) / ad;
+                        /* a grazing interval's cap end must still lie on its disk */
+                        c[k].ok = !tangent || CYL__P(fdisk)(m, s, R2, c[k].t);
+                    }
+                }
+            }
+        }
+    } else if (caps && hfin) {
+        /* the wall is never hit; a cap is, where the ray point is on its disk */
+        for (k = 0; k < 2; k++) {
+            c[k].sg = (k == 0) == (ad > 0) ? -1 : 1;
+            c[k].t = ((CYL__L)c[k].sg * Hn - aw) / ad;
+            c[k].ok = CYL__P(fdisk)(m, s, R2, c[k].t);
+        }
+    }
+
+    {
+        CYL__L tmin = (CYL__L)ray->tmin, tmax = (CYL__L)ray->tmax;
+        int kept = 0, sel[2] = {0, 0};
+        for (k = 0; k < 2; k++) {
+            CYL__L tu = c[k].t * tsc;
+            if (c[k].ok && tu >= tmin && tu <= tmax && CYL__P(labs)(tu) <= (CYL__L)CYL__MAXR) {
+                sel[kept++] = k;
+                if (want < 2) break;
+            }
+        }
+        if (want == 0 || !kept) return kept > 0;
+        {
+            /* every output value first, then the caller's record: a hand-over must leave it
+               untouched */
+            CYL__N(hit) ho[2];
+            CYL__R Hu = cyl->h * CYL__C(0.5);
+            if (Hu + Hu > cyl->h) Hu = (cyl->h - CYL__MINR * 2 * CYL__U) * CYL__C(0.5);
+            for (i = 0; i < kept; i++) {
+                const CYL__P(fx) *x = &c[sel[i]];
+                CYL__N(hit) *o = &ho[i];
+                CYL__L t = x->t, tu, nl[3] = {0, 0, 0}, y[3], face = 1, et;
+                CYL__R tr;
+#if !CYL__WIDE
+                if (x->sg) {
+                    /* the cap crossing to an ulp, kept in the accepted range */
+                    t = CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg);
+                    if (t * tsc < tmin) t = tmin / tsc;
+                    if (t * tsc > tmax) t = tmax / tsc;
+                }
+#else
+                (void)lf;
+#endif
+                tu = t * tsc;
+                tr = (CYL__R)tu;
+                o->t = tr;
+                o->part = x->sg ? (x->sg > 0 ? CYL_CAP_HIGH : CYL_CAP_LOW) : CYL_SIDE;
+                o->flags = (sel[i] ? CYL_F_INSIDE : 0u) | (parallel ? CYL_F_PARALLEL : 0u) |
+                           (tangent && !x->sg ? CYL_F_TANGENT : 0u);
+                if (!x->sg) {
+                    /* wall: y = a × x(t) = m + t·s; the outward normal is y × a, which has no
+                       cancellation (y ⊥ a) */
+                    CYL__L v = CYL__LMADD(t, ad, aw) / na * vsc;
+                    if (!(opts & CYL_NO_NORMAL)) {
+                        CYL__L len2;
+                        for (k = 0; k < 3; k++) y[k] = CYL__LMADD(t, s[k], m[k]);
+                        nl[0] = CYL__LMADD(y[1], a[2], -(y[2] * a[1]));
+                        nl[1] = CYL__LMADD(y[2], a[0], -(y[0] * a[2]));
+                        nl[2] = CYL__LMADD(y[0], a[1], -(y[1] * a[0]));
+                        len2 = CYL__P(ldot)(nl, nl);
+                        if (!(len2 >= tiny)) {
+                            /* y lost to cancellation (r far below the rounding of o − c):
+                               any unit vector orthogonal to the axis */
+                            k = CYL__P(labs)(a[0]) <= CYL__P(labs)(a[1]) ? 0 : 1;
+                            nl[k] = 0;
+                            nl[1 - k] = a[2];
+                            nl[2] = -a[1 - k];
+                            len2 = CYL__P(ldot)(nl, nl);
+                        }
+                        len2 = 1 / CYL__LSQRT(len2);
+                        for (k = 0; k < 3; k++) nl[k] *= len2;
+                        face = CYL__P(ldot)(nl, d) > 0 ? -1 : 1;
+                    }
+                    /* within ±h/2 up to rounding: reported within; an infinite tube's v
+                       saturates */
+                    v = v > (CYL__L)Hu ? (CYL__L)Hu : (v < -(CYL__L)Hu ? -(CYL__L)Hu : v);
+                    if (!hfin && CYL__P(labs)(v) > (CYL__L)CYL__MAXR)
+                        v = v > 0 ? (CYL__L)CYL__MAXR : -(CYL__L)CYL__MAXR;
+                    o->v = (CYL__R)v;
+                } else {
+                    if (!(opts & CYL_NO_NORMAL)) {
+                        CYL__L sg = (CYL__L)x->sg / na;
+                        for (k = 0; k < 3; k++) nl[k] = sg * a[k];
+                        face = sg * ad > 0 ? -1 : 1;
+                    }
+                    o->v = x->sg > 0 ? Hu : -Hu;
+                }
+                if (opts & CYL_OUTWARD) face = 1;
+                for (k = 0; k < 3; k++) o->n[k] = (CYL__R)(face * nl[k]);
+                if (opts & CYL_NO_ERRBOUND) {
+                    o->t_err = CYL__MAXR * 2;
+                    continue;
+                }
+                {
+                    /* t's bound, from the residual at t (see NUMERICAL NOTES 8): bounds on the
+                       errors of s and m (with the rounding of o − c) give one on y = m + t·s,
+                       hence on f(t) = |y|² − r²|a|² and on f'(t)/2 = y·s; the nearest root of
+                       the exact quadratic is within min(F/G, √(F/A)). A cap: the plane's
+                       residual a·x(t) ∓ H|a| over a·d. */
+                    CYL__L ma = CYL__P(lmax3)(a), mw = CYL__P(lmax3)(w), ms = CYL__P(lmax3)(s);
+                    CYL__L at = CYL__P(labs)(t), em = 6 * u * ma * mw * (1 + 4 * u), es;
+#if CYL__LKAHAN
+                    es = 2 * u * ms * (1 + 4 * u);
+#else
+                    es = 4 * u * ma * CYL__P(lmax3)(d) * (1 + 4 * u);
+#endif
+                    if (!x->sg) {
+                        CYL__L y1, Ey, Y, F, EF, G, EG, Alo;
+                        if (opts & CYL_NO_NORMAL)
+                            for (k = 0; k < 3; k++) y[k] = CYL__LMADD(t, s[k], m[k]);
+                        y1 = CYL__P(labs)(y[0]) + CYL__P(labs)(y[1]) + CYL__P(labs)(y[2]);
+                        Ey = em + at * (es + u * ms) + u * y1;
+                        Y = CYL__P(ldot)(y, y);
+                        F = Y - R2;
+                        EF = (3 * u * Y + Ey * (2 * y1 + 3 * Ey) + 6 * u * R2 +
+                              u * CYL__P(labs)(F)) * sf + tiny;
+                        F = CYL__P(labs)(F) + EF;
+                        G = CYL__P(labs)(CYL__P(ldot)(y, s));
+                        EG = (y1 * (3 * u * ms + es) + 3 * Ey * (ms + es)) * sf + tiny;
+                        G -= EG;
+                        Alo = A - (3 * u * A + es * (6 * ms + 3 * es)) * sf - tiny;
+                        if (G > 0 && G * G > (2 * A - Alo) * F) et = F / G;
+                        else et = Alo > 0 ? CYL__LSQRT(F / Alo) : (CYL__L)CYL__MAXR * 2;
+                    } else {
+                        CYL__L ead = 9 * u * ma * CYL__P(lmax3)(d) + tiny, g, aad;
+                        g = CYL__LMADD(t, ad, aw) - (CYL__L)x->sg * Hn;
+                        aad = CYL__P(labs)(ad) - ead;
+                        g = CYL__P(labs)(g) +
+                            (12 * u * ma * mw + at * (ead + 6 * u * ma * CYL__P(lmax3)(d)) +
+                             6 * u * Hn + u * (CYL__P(labs)(aw) + at * CYL__P(labs)(ad))) * sf + tiny;
+                        et = aad > 0 ? g / aad : (CYL__L)CYL__MAXR * 2;
+                    }
+                    /* in the caller's units, plus the rounding to the API's type, rounded up */
+                    et = et * sf * tsc + CYL__P(labs)(tu - (CYL__L)tr);
+                    if (CYL__WIDE) et *= (CYL__L)1 + (CYL__L)1 / (CYL__L)1048576;
+                    if (CYL__P(labs)(tu) < tiny) et += tiny * 2 * u;
+                    o->t_err = (CYL__R)et;
+                    if (CYL__P(abs)(tr) < CYL__MINR) o->t_err += CYL__MINR * 2 * CYL__U;
+                }
+            }
+            for (i = 0; i < kept; i++) {
+                hits[i].t = ho[i].t;
+                hits[i].t_err = ho[i].t_err;
+                for (k = 0; k < 3; k++) hits[i].n[k] = ho[i].n[k];
+                hits[i].v = ho[i].v;
+                hits[i].part = ho[i].part;
+                hits[i].flags = ho[i].flags;
+            }
+        }
+        return kept;
+    }
+}
+
 /* ------------------------------------------------------------------ public functions */
 
-CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
-                              unsigned opts, CYL__N(hit) *hit)
+/* The solver's entry points stay out of line: the fast path answers nearly every call, and
+   a small public function inlines into the caller's loop, where the options fold. */
+CYL__SLOW int CYL__P(slow_intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                                     unsigned opts, CYL__N(hit) *hit)
 {
     CYL__P(frame) f;
     CYL__P(cand) c[2];
-    int rc = hit ? CYL__P(check)(ray, cyl, opts) : CYL_E_NULL;
+    int rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
     if (!CYL__P(solve)(ray, cyl, opts, 1, &f, c)) return CYL_MISS;
     CYL__P(finish)(&f, &c[0], opts, ray, hit);
     return CYL_HIT;
 }
 
-CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
-                                  unsigned opts, CYL__N(hit) hits[2])
+CYL__SLOW int CYL__P(slow_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                               unsigned opts, CYL__N(hit) hits[2])
 {
     CYL__P(frame) f;
     CYL__P(cand) c[2];
-    int k, n, rc = hits ? CYL__P(check)(ray, cyl, opts) : CYL_E_NULL;
+    int k, n, rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
     n = CYL__P(solve)(ray, cyl, opts, 1, &f, c);
     for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, ray, &hits[k]);
@@ -1223,13 +1673,41 @@ CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder)
     return n;
 }
 
-CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
+CYL__SLOW int CYL__P(slow_occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                                    unsigned opts)
 {
     CYL__P(frame) f;
     CYL__P(cand) c[2];
     int rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
     return CYL__P(solve)(ray, cyl, opts, 0, &f, c) > 0;
+}
+
+CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                              unsigned opts, CYL__N(hit) *hit)
+{
+    int rc;
+    if (!ray || !cyl || !hit) return CYL_E_NULL;
+    if (CYL__P(fastok)(opts) && (rc = CYL__P(fast)(ray, cyl, opts, 1, hit)) >= 0) return rc;
+    return CYL__P(slow_intersect)(ray, cyl, opts, hit);
+}
+
+CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                                  unsigned opts, CYL__N(hit) hits[2])
+{
+    int n;
+    if (!ray || !cyl || !hits) return CYL_E_NULL;
+    if (CYL__P(fastok)(opts) && (n = CYL__P(fast)(ray, cyl, opts, 2, hits)) >= 0) return n;
+    return CYL__P(slow_all)(ray, cyl, opts, hits);
+}
+
+CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
+{
+    int rc;
+    if (!ray || !cyl) return CYL_E_NULL;
+    if (CYL__P(fastok)(opts) && (rc = CYL__P(fast)(ray, cyl, opts, 0, (CYL__N(hit) *)0)) >= 0)
+        return rc;
+    return CYL__P(slow_occluded)(ray, cyl, opts);
 }
 
 /* The cylinder from p0 (its low cap center) to p1 (high cap center). c, a and h are rounded
@@ -1278,5 +1756,16 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__RDIR
 #undef CYL__RLEN
 #undef CYL__RCOARSE
+#undef CYL__L
+#undef CYL__LU
+#undef CYL__LMIN
+#undef CYL__LMAX
+#undef CYL__LSQRT
+#undef CYL__LABS
+#undef CYL__LFMA
+#undef CYL__LMADD
+#undef CYL__LKAHAN
+#undef CYL__LHI
+#undef CYL__WIDE
 
 #endif /* CYL__BODY */
