@@ -677,10 +677,12 @@ CYL__INL int CYL__P(check)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     return rc;
 }
 
-/* The fast path serves every valid option set but CYL_PRECISE. */
+/* The fast path serves every valid option set; CYL_PRECISE only where it computes in the
+   wider type with a hardware FMA (it then checks its own headroom, see fast). */
 CYL__INL int CYL__P(fastok)(unsigned opts)
 {
-    return !(opts & ~(unsigned)CYL__SUPPORTED) && !(opts & CYL_PRECISE);
+    return !(opts & ~(unsigned)CYL__SUPPORTED) &&
+           (!(opts & CYL_PRECISE) || (CYL__WIDE && CYL__LKAHAN));
 }
 
 /* ------------------------------------------------------------------ the solver */
@@ -1366,6 +1368,36 @@ CYL__INL CYL__R CYL__P(fcapt)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
     CYL__P(acc_add)(&num, -sw.hi);
     return CYL__P(div_dw)(num.hi, num.lo, ad, adl);
 }
+
+/* A wall root to about an ulp: the solver's exact-quadratic correction (refine), with o − c
+   exact (TwoSum, times the frame's length scale lf) and s, m, r²|a|² as double words. The plain
+   root loses ulps where |o − c| is far above r or where the coefficients cancel. */
+CYL__INL CYL__R CYL__P(fref)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                            const CYL__R a[3], const CYL__R d[3], CYL__R r, const CYL__R lf[2],
+                            CYL__R A, CYL__R sq, CYL__R t, int upper)
+{
+    CYL__P(frame) f;
+    CYL__R wh[3], wl[3], zero[3] = {0, 0, 0}, r2 = r * r, r2l = CYL__FMAR(r, r, -r2), aa, aal;
+    CYL__R hi, lo;
+    CYL__P(acc) sa;
+    int i;
+    for (i = 0; i < 3; i++) {
+        CYL__P(two_sum)(ray->o[i], -cyl->c[i], &wh[i], &wl[i]);
+        wh[i] = wh[i] * lf[0] * lf[1];
+        wl[i] = wl[i] * lf[0] * lf[1];
+    }
+    CYL__P(cross_dw)(a, d, zero, f.s, f.sl);
+    CYL__P(cross_dw)(a, wh, wl, f.m, f.ml);
+    sa = CYL__P(dot_acc)(a, a);
+    aa = sa.hi + sa.lo;
+    aal = sa.lo - (aa - sa.hi);
+    f.R2 = r2 * aa;
+    f.R2l = CYL__FMAR(r2, aa, -f.R2) + r2 * aal + r2l * aa;
+    f.A = A;
+    f.sq = sq;
+    CYL__P(refine)(&f, t, upper, &hi, &lo);
+    return hi;
+}
 #endif
 
 /* want: 0 occluded (returns 1 or 0), 1 the nearest hit into hits[0], 2 every hit.
@@ -1396,9 +1428,9 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
         s[0] = CYL__P(ldop)(a[1], d[2], a[2], d[1]);
         s[1] = CYL__P(ldop)(a[2], d[0], a[0], d[2]);
         s[2] = CYL__P(ldop)(a[0], d[1], a[1], d[0]);
-        m[0] = a[1] * w[2] - a[2] * w[1];
-        m[1] = a[2] * w[0] - a[0] * w[2];
-        m[2] = a[0] * w[1] - a[1] * w[0];
+        m[0] = CYL__P(ldop)(a[1], w[2], a[2], w[1]);
+        m[1] = CYL__P(ldop)(a[2], w[0], a[0], w[2]);
+        m[2] = CYL__P(ldop)(a[0], w[1], a[1], w[0]);
         aa = CYL__P(ldot)(a, a);
         dd = CYL__P(ldot)(d, d);
         MM = CYL__P(ldot)(m, m);
@@ -1407,7 +1439,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
            fail it. Inside it no quantity below overflows, and none that decides or bounds
            anything underflows: they are products of |a|²|d|² and |m|² + r²|a|². */
         if (aa * dd >= lo && aa * dd <= hi && MM + R2 <= hi && R2 >= lo && r > 0 &&
-            cyl->h > 0 && ray->tmin <= ray->tmax && (H * aa <= hi || !hfin))
+            cyl->h > 0 && ray->tmin <= ray->tmax)
             break;
         if (scaled++ || CYL__P(validate)(ray, cyl)) return -1;
         {
@@ -1438,6 +1470,15 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
             vsc = (CYL__L)CYL__P(exp2i)(ev);
         }
     }
+    if ((opts & CYL_PRECISE) && CYL__WIDE) {
+        /* The precise tier in the wider type: its roundings (u of CYL__L, about 2^-53) enter
+           e = 1 − ρ²/r², the rim and t amplified by at most |o − c|/r and |o − c|/(h/2)
+           (s is accurate to 2u relative with the FMA): below 2^28 that is under 2^-20, inside
+           the API type's band of 2^-16. Beyond, the compensated solver answers. */
+        CYL__L mw = CYL__P(lmax3)(w);
+        if (!(mw <= r * (CYL__L)268435456.0) || (hfin && !(mw <= H * (CYL__L)268435456.0)))
+            return -1;
+    }
     A = CYL__P(ldot)(s, s);
     /* sin²(angle) = A / (|a|²|d|²) against the parallel tolerance */
     parallel = A <= (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * aa * dd;
@@ -1447,7 +1488,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
     Hn = hfin ? H * na : 0;
     c[0].ok = c[1].ok = 0;
     c[0].sg = c[1].sg = 0;
-    c[0].t = c[1].t = tw[0] = tw[1] = 0;
+    c[0].t = c[1].t = 0;
     P = D = 0;
     if (!parallel) {
         CYL__L r2 = r * r, band, ta, tb;
@@ -1511,20 +1552,19 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
         }
         if (want == 0 || !kept) return kept > 0;
         {
-            /* every output value first, then the caller's record: a hand-over must leave it
-               untouched */
-            CYL__N(hit) ho[2];
+            /* nothing hands over from here on: the caller's record is written directly */
             CYL__R Hu = cyl->h * CYL__C(0.5);
             if (Hu + Hu > cyl->h) Hu = (cyl->h - CYL__MINR * 2 * CYL__U) * CYL__C(0.5);
             for (i = 0; i < kept; i++) {
                 const CYL__P(fx) *x = &c[sel[i]];
-                CYL__N(hit) *o = &ho[i];
+                CYL__N(hit) *o = &hits[i];
                 CYL__L t = x->t, tu, nl[3] = {0, 0, 0}, y[3], face = 1, et;
                 CYL__R tr;
 #if !CYL__WIDE
-                if (x->sg) {
-                    /* the cap crossing to an ulp, kept in the accepted range */
-                    t = CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg);
+                if (x->sg || !tangent) {
+                    /* the crossing to an ulp, kept in the accepted range */
+                    t = x->sg ? CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg)
+                              : CYL__P(fref)(ray, cyl, a, d, r, lf, A, sq, t, sel[i]);
                     if (t * tsc < tmin) t = tmin / tsc;
                     if (t * tsc > tmax) t = tmax / tsc;
                 }
@@ -1627,14 +1667,6 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                     o->t_err = (CYL__R)et;
                     if (CYL__P(abs)(tr) < CYL__MINR) o->t_err += CYL__MINR * 2 * CYL__U;
                 }
-            }
-            for (i = 0; i < kept; i++) {
-                hits[i].t = ho[i].t;
-                hits[i].t_err = ho[i].t_err;
-                for (k = 0; k < 3; k++) hits[i].n[k] = ho[i].n[k];
-                hits[i].v = ho[i].v;
-                hits[i].part = ho[i].part;
-                hits[i].flags = ho[i].flags;
             }
         }
         return kept;
