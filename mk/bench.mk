@@ -43,7 +43,19 @@ $(BENCH_BUILD)/alt_check.stamp: bench/alt_formulations.h cylinder_isect.h
 	$(CLANG) $(WARN_C) $(BENCH_INC) -fsyntax-only $(BENCH_SRCS) bench/bench.c
 	@touch $@
 
-RUNNERS      += $(BENCH_BUILD)/test_accuracy
+# The same targets for the fast path's other arithmetic: the float API in float, and Kahan's
+# FMA products (where this machine has FMA3).
+$(BENCH_BUILD)/test_accuracy_narrow: bench/test_accuracy.c $(BENCH_SRCS) $(BENCH_HDRS) $(BENCH_BUILD)/unity.o
+	@mkdir -p $(@D)
+	$(GCC) $(WARN_C) -O2 -DCYL_FLOAT_WIDE=0 $(UNITY_FLAGS) $(BENCH_INC) $< $(BENCH_SRCS) -x none $(BENCH_BUILD)/unity.o $(BENCH_LIBS) -o $@
+$(BENCH_BUILD)/test_accuracy_fma: bench/test_accuracy.c $(BENCH_SRCS) $(BENCH_HDRS) $(BENCH_BUILD)/unity.o
+	@mkdir -p $(@D)
+	$(GCC) $(WARN_C) -O2 -mfma $(UNITY_FLAGS) $(BENCH_INC) $< $(BENCH_SRCS) -x none $(BENCH_BUILD)/unity.o $(BENCH_LIBS) -o $@
+
+RUNNERS      += $(BENCH_BUILD)/test_accuracy $(BENCH_BUILD)/test_accuracy_narrow
+ifeq ($(shell grep -qw fma /proc/cpuinfo 2>/dev/null && test "$$(uname -m)" = x86_64 && echo 1),1)
+RUNNERS      += $(BENCH_BUILD)/test_accuracy_fma
+endif
 TEST_PREREQS += $(BENCH_BUILD)/alt_check.stamp $(BENCH_BUILD)/bench
 
 $(REPORT_VENV)/.installed:

@@ -5,7 +5,8 @@
 # clang ASan+UBSan). This fragment adds the compile-configuration checks of tests/config:
 #   runners   CYL_NO_FLOAT, CYL_NO_DOUBLE, -DCYL_NO_PRECISE, user overrides (CYL_SQRTF/CYL_SQRT/
 #             CYL_FMAF/CYL_FMA/CYL_DEF and the tolerance macros), two translation units linked
-#             together; the last two also as C++11
+#             together (the last two also as C++11); the contract suite with CYL_FLOAT_WIDE=0
+#             and with a hardware FMA (-mfma, where this machine has one)
 #   prereq    -ffast-math must stop the build at the header's #error (gcc and clang)
 # Build one runner alone: make build/gcc-O0/test_float && build/gcc-O0/test_float
 
@@ -32,6 +33,16 @@ $(eval $(call TESTS_CFG_RUNNER,overrides,tests/config/cfg_overrides.c tests/conf
 $(eval $(call TESTS_CFG_RUNNER,overrides_cxx,tests/config/cfg_overrides.c tests/config/cfg_overrides_ext.c,,cxx))
 $(eval $(call TESTS_CFG_RUNNER,two_tu,tests/config/cfg_two_tu_main.c tests/config/cfg_two_tu_other.c,,c))
 $(eval $(call TESTS_CFG_RUNNER,two_tu_cxx,tests/config/cfg_two_tu_main.c tests/config/cfg_two_tu_other.c,,cxx))
+# The fast path's other arithmetic: the float API computed in float (as on targets without a
+# double FPU), and Kahan's FMA products where the FMA is hardware (x86-64 with FMA3 only, so
+# that the runner can execute here).
+$(eval $(call TESTS_CFG_RUNNER,float_narrow,tests/test_float.c,-DCYL_FLOAT_WIDE=0,c))
+TESTS_FMA_OK := $(shell grep -qw fma /proc/cpuinfo 2>/dev/null && test "$$(uname -m)" = x86_64 && echo 1)
+ifeq ($(TESTS_FMA_OK),1)
+$(eval $(call TESTS_CFG_RUNNER,fma_float,tests/test_float.c,-mfma,c))
+$(eval $(call TESTS_CFG_RUNNER,fma_double,tests/test_double.c,-mfma,c))
+$(eval $(call TESTS_CFG_RUNNER,fma_float_narrow,tests/test_float.c,-mfma -DCYL_FLOAT_WIDE=0,c))
+endif
 
 $(TESTS_CFG_DIR)/fast_math.stamp: tests/config/cfg_fast_math.c tests/config/check-fast-math.sh cylinder_isect.h
 	@bash tests/config/check-fast-math.sh $@ $(GCC) $(CLANG)
