@@ -76,10 +76,8 @@
      CYL_CAPS          solid capped cylinder instead of the open tube
      CYL_OUTWARD       outward normal instead of the ray-facing one
      CYL_NO_TANGENT    grazing contacts within the tangent tolerance are misses
-     CYL_PRECISE       precise tier: every coefficient of the wall (P, B, C, D) as a
-                       compensated sum, both wall roots corrected, and the rim decided from
-                       the axial coordinate of the corrected root: classification is right
-                       wherever its margin exceeds the tolerances, far origins included
+     CYL_PRECISE       precise tier: classification right wherever its margin exceeds the
+                       tolerances, far origins included (see DEFAULT PATH AND PRECISE TIER)
      CYL_NO_NORMAL     skip the normal: hit.n = {0, 0, 0}
      CYL_NO_ERRBOUND   skip the bound: hit.t_err = +INFINITY
      CYL_TRUSTED       skip input validation (NULL and option checks remain): the caller
@@ -92,6 +90,25 @@
      CYL_E_NONFINITE (-2) NaN/inf in o, d, c, a CYL_E_HEIGHT (-6) h <= 0 or NaN
      CYL_E_ZERO_DIR (-3) d == 0                 CYL_E_TRANGE (-7) tmin > tmax, or a NaN
      CYL_E_ZERO_AXIS (-4) a == 0                CYL_E_OPTION (-8) unknown or compiled-out bit
+
+   DEFAULT PATH AND PRECISE TIER
+   =============================
+   Every call without CYL_PRECISE runs a fast path first: the plain formulas of NUMERICAL
+   NOTES 3-5 once, in double for the float API where double is hardware (CYL_FLOAT_WIDE),
+   else in the API's own type, with s = a × d from Kahan's FMA products where the FMA is
+   hardware. For the double API (and the float API computed in float) the crossing it returns
+   is then corrected from double words: a wall root by the exact-quadratic step of note 4, a
+   cap crossing as in note 5; so t is about an ulp in both APIs. Its decisions (tangency, rim,
+   tmin/tmax) carry the plain roundings: within a few ulps of a threshold they can go either
+   way, and farther for origins far from the axis (the rounding of o − c is about u·|o − c|/r
+   of e). t_err is rigorous on every path (note 8). Inputs outside the range where nothing
+   overflows or underflows are first scaled by powers of two; invalid input and degenerate
+   cases go to the compensated solver of notes 1-7, which then answers alone.
+   CYL_PRECISE runs that compensated solver on every call, with every wall coefficient
+   compensated and the rim decided from the corrected roots (note 7). For the float API
+   computed in double with a hardware FMA it takes the fast path instead wherever that is as
+   good: |o − c| below 2^28 r and 2^28 h/2, where double's roundings stay under 2^-20 of every
+   margin, inside float's band of 2^-16.
 
    CONFIGURATION (define before including)
    =============
@@ -107,6 +124,9 @@
                            clang), else sqrt[f]          only when a non-builtin default is used
      CYL_FMAF, CYL_FMA     __builtin_fma[f], else fma[f] fused multiply-add; must be correctly
                                                         rounded (a real FMA or libm's)
+     CYL_FLOAT_WIDE        1 where double is hardware   the float API's fast path computes in
+                           (x86-64, AArch64, ARM with   double; 0: in float (always so with
+                           VFP-D, RV64D, s390x, ppc64)  CYL_NO_DOUBLE)
      CYL_TANGENT_TOLF      2^-16 = 2^-(24-8)            tangent band on e = 1 − ρ²/r²
      CYL_TANGENT_TOL       2^-45 = 2^-(53-8)
      CYL_PARALLEL_TOLF     2^-24 = u (float)            parallel bound on sin(angle)
@@ -147,6 +167,13 @@
         inherent √ term. Caps: the same with the plane's linear residual.
      7. CYL_PRECISE: B, C and D compensated too; both roots corrected before the rim is
         decided from the sign of a compensated a·x(t) ± H|a|.
+     8. The fast path's t_err: componentwise bounds on the errors of s = a × d and m = a × w
+        (the latter including the rounding of o − c) give one on y = m + t·s, hence F >= |f(t)|
+        and G <= |f'(t)|/2 (standard model: each operation errs by at most u, an FMA once, so
+        the bounds hold with or without contraction); the nearest root of the exact quadratic
+        is within F/G where G² > A·F (f' keeps its sign there: the same crossing), else
+        √(F/A). A cap: the plane's residual a·x(t) ∓ H|a| over a·d. For the float API computed
+        in double, the rounding of t to float is added and the sum rounded up.
    Measured against the exact MPFR reference of ref/ on ten case families (`make report`,
    bench/REPORT.md; `make test` asserts the targets on a fixed-seed sample): t_err contained
    the exact t in every hit; see bench/REPORT.md for ulps per family and the timing ratios.
