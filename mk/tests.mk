@@ -5,8 +5,8 @@
 # clang ASan+UBSan). This fragment adds the compile-configuration checks of tests/config:
 #   runners   CYL_NO_FLOAT, CYL_NO_DOUBLE, -DCYL_NO_PRECISE, user overrides (CYL_SQRTF/CYL_SQRT/
 #             CYL_FMAF/CYL_FMA/CYL_DEF and the tolerance macros), two translation units linked
-#             together (the last two also as C++11); the contract suite with CYL_FLOAT_WIDE=0
-#             and with a hardware FMA (-mfma, where this machine has one)
+#             together (the last two also as C++11); the contract suite with CYL_FLOAT_WIDE=0,
+#             with CYL_NO_FAST_PATH, and with a hardware FMA (-mfma, where this machine has one)
 #   prereq    -ffast-math must stop the build at the header's #error (gcc and clang)
 # Build one runner alone: make build/gcc-O0/test_float && build/gcc-O0/test_float
 
@@ -37,6 +37,9 @@ $(eval $(call TESTS_CFG_RUNNER,two_tu_cxx,tests/config/cfg_two_tu_main.c tests/c
 # double FPU), and Kahan's FMA products where the FMA is hardware (x86-64 with FMA3 only, so
 # that the runner can execute here).
 $(eval $(call TESTS_CFG_RUNNER,float_narrow,tests/test_float.c,-DCYL_FLOAT_WIDE=0,c))
+# ... and without it: the compensated solver answers every call (CYL_NO_FAST_PATH)
+$(eval $(call TESTS_CFG_RUNNER,no_fast_float,tests/test_float.c,-DCYL_NO_FAST_PATH,c))
+$(eval $(call TESTS_CFG_RUNNER,no_fast_double,tests/test_double.c,-DCYL_NO_FAST_PATH,c))
 TESTS_FMA_OK := $(shell grep -qw fma /proc/cpuinfo 2>/dev/null && test "$$(uname -m)" = x86_64 && echo 1)
 ifeq ($(TESTS_FMA_OK),1)
 $(eval $(call TESTS_CFG_RUNNER,fma_float,tests/test_float.c,-mfma,c))

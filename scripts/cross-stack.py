@@ -32,8 +32,11 @@ def main():
     def deepest(node):
         best, bdyn, bext = 0, False, False
         for nxt in edges.get(node, ()):
-            if nxt not in frame:  # defined elsewhere
-                bext = True
+            if nxt not in frame:
+                # "file:function" is a static function of this object that GCC emitted without
+                # a node of its own (seen for small leaves): no frame recorded, not external.
+                # A bare name is defined elsewhere.
+                bext = bext or ":" not in nxt
                 continue
             s, d, e = deepest(nxt)
             if s > best:
