@@ -1710,9 +1710,16 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                     }
                     /* in the caller's units, plus the rounding to the API's type, rounded up */
                     et = et * sf * tsc + CYL__P(labs)(tu - (CYL__L)tr);
-                    if (CYL__WIDE) et *= (CYL__L)1 + (CYL__L)1 / (CYL__L)1048576;
                     if (CYL__P(labs)(tu) < tiny) et += tiny * 2 * u;
-                    o->t_err = (CYL__R)et;
+                    {
+                        /* in the API's type, rounded up: where it rounded down (the wider
+                           type's bound, or a subnormal one), one ulp more (fuzz findings 23,
+                           24) */
+                        CYL__R te = (CYL__R)et;
+                        if ((CYL__L)te < et)
+                            te += CYL__P(abs)(te) * (2 * CYL__U) + CYL__MINR * 2 * CYL__U;
+                        o->t_err = te;
+                    }
                     if (CYL__P(abs)(tr) < CYL__MINR) o->t_err += CYL__MINR * 2 * CYL__U;
                 }
             }

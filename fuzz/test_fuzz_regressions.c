@@ -283,6 +283,16 @@ static void test_double_precise_tier_hit_on_clear_miss(void)
   replay_finding("double-precise-tier-hit-on-clear-miss", FIXED);
 }
 
+/* Finding 23 (fixed by the commit that added it). Float from a segment 2^-109 long, the ray
+ * 2^-111 from it: the fast path computes the float API in double and reported t = 0xb.f5418p-112
+ * with t_err = 0xa.22p-138, a subnormal float: the double bound plus the rounding to float,
+ * converted to float by rounding to nearest, lost the bits that made it contain the double
+ * answer (and the exact t). Found by `make fuzz` on the first fast-path header. */
+static void test_float_wide_t_err_rounded_down(void)
+{
+  replay_finding("float-wide-t-err-rounded-down", FIXED);
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -314,5 +324,6 @@ int main(void)
   RUN_TEST(test_float_far_segment_spurious_wall_hits);
   RUN_TEST(test_double_far_segment_spurious_wall_hits);
   RUN_TEST(test_double_precise_tier_hit_on_clear_miss);
+  RUN_TEST(test_float_wide_t_err_rounded_down);
   return UNITY_END();
 }
