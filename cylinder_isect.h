@@ -424,31 +424,8 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__RDIR 16.0f
 #define CYL__RLEN 65536.0f
 #define CYL__RCOARSE 4.656612873077393e-10f /* 2^-31 */
-#if CYL_FLOAT_WIDE
-#define CYL__L double
-#define CYL__LU (DBL_EPSILON * 0.5)
-#define CYL__LMIN DBL_MIN
-#define CYL__LMAX DBL_MAX
-#define CYL__LSQRT(x) CYL_SQRT(x)
-#define CYL__LABS(x) CYL__FABS(x)
-#define CYL__LFMA(a, b, c) CYL_FMA(a, b, c)
-#define CYL__LMADD(a, b, c) CYL__DMADD(a, b, c)
-#define CYL__LKAHAN CYL__DKAHAN
-#define CYL__LHI 2.037035976334486e90 /* 2^300 */
-#define CYL__WIDE 1
-#else
-#define CYL__L float
-#define CYL__LU (FLT_EPSILON * 0.5f)
-#define CYL__LMIN FLT_MIN
-#define CYL__LMAX FLT_MAX
-#define CYL__LSQRT(x) CYL_SQRTF(x)
-#define CYL__LABS(x) CYL__FABSF(x)
-#define CYL__LFMA(a, b, c) CYL_FMAF(a, b, c)
-#define CYL__LMADD(a, b, c) CYL__FMADD(a, b, c)
-#define CYL__LKAHAN CYL__FKAHAN
-#define CYL__LHI 1099511627776.0f /* 2^40 */
-#define CYL__WIDE 0
-#endif
+#define CYL__LD CYL_FLOAT_WIDE /* the fast path's type: double (1) or float (0) */
+#define CYL__WIDE CYL_FLOAT_WIDE
 #include CYL_HEADER_FILENAME /* the body #undefs the parameters above */
 #endif
 
@@ -475,6 +452,17 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__RDIR 18446744073709551616.0
 #define CYL__RLEN 3.402823669209384634633746e38
 #define CYL__RCOARSE 1.1270725851789228e-131 /* 2^-435 */
+#define CYL__LD 1
+#define CYL__WIDE 0
+#include CYL_HEADER_FILENAME /* the body #undefs the parameters above */
+#endif
+
+#endif /* CYLINDER_ISECT_H */
+
+#else /* CYL__BODY: one precision, written once; included above with CYL__R = float, double */
+
+/* The fast path's working type (see the fast path): double or float, chosen by the instance. */
+#if CYL__LD
 #define CYL__L double
 #define CYL__LU (DBL_EPSILON * 0.5)
 #define CYL__LMIN DBL_MIN
@@ -485,13 +473,18 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LMADD(a, b, c) CYL__DMADD(a, b, c)
 #define CYL__LKAHAN CYL__DKAHAN
 #define CYL__LHI 2.037035976334486e90 /* 2^300 */
-#define CYL__WIDE 0
-#include CYL_HEADER_FILENAME /* the body #undefs the parameters above */
+#else
+#define CYL__L float
+#define CYL__LU (FLT_EPSILON * 0.5f)
+#define CYL__LMIN FLT_MIN
+#define CYL__LMAX FLT_MAX
+#define CYL__LSQRT(x) CYL_SQRTF(x)
+#define CYL__LABS(x) CYL__FABSF(x)
+#define CYL__LFMA(a, b, c) CYL_FMAF(a, b, c)
+#define CYL__LMADD(a, b, c) CYL__FMADD(a, b, c)
+#define CYL__LKAHAN CYL__FKAHAN
+#define CYL__LHI 1099511627776.0f /* 2^40 */
 #endif
-
-#endif /* CYLINDER_ISECT_H */
-
-#else /* CYL__BODY: one precision, written once; included above with CYL__R = float, double */
 
 typedef struct CYL__N(ray) { CYL__R o[3], d[3], tmin, tmax; } CYL__N(ray);
 typedef struct CYL__N(cylinder) { CYL__R c[3], a[3], r, h; } CYL__N(cylinder);
@@ -1464,7 +1457,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
         w[i] = (CYL__L)ray->o[i] - (CYL__L)cyl->c[i];
     }
     r = (CYL__L)cyl->r;
-    H = (CYL__L)cyl->h * (CYL__L)0.5;
+    H = (CYL__L)cyl->h; /* h until the frame is set, then h/2 */
     for (;;) {
         /* s = a × d with Kahan's products where the FMA is hardware (relative error 2u: rays
            near the axis direction keep an accurate s), m = a × w plainly (its error is of the
@@ -1513,6 +1506,16 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
             tsc = (CYL__L)CYL__P(exp2i)(et);
             vsc = (CYL__L)CYL__P(exp2i)(ev);
         }
+    }
+    {
+        /* Hand over what the plain roundings cannot resolve: o − c beyond 2^30 (double) or
+           2^12 (float) radii or half heights, where its rounding alone is 2^-23 (2^-12) of e or
+           of the rim margin; and an h/2 that rounds (h subnormal in the frame). */
+        const CYL__L far = CYL__LD ? (CYL__L)1073741824.0 : (CYL__L)4096.0;
+        CYL__L mw = CYL__P(lmax3)(w), hh = H;
+        H = hh * (CYL__L)0.5;
+        if (!(mw <= far * r) || (hfin && !(mw <= far * H))) return -1;
+        if (hfin && (H + H < hh || H + H > hh)) return -1;
     }
     if ((opts & CYL_PRECISE) && CYL__WIDE) {
         /* The precise tier in the wider type: its roundings (u of CYL__L, about 2^-53) enter
@@ -1723,6 +1726,10 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                     if (CYL__P(abs)(tr) < CYL__MINR) o->t_err += CYL__MINR * 2 * CYL__U;
                 }
             }
+            if (kept == 2 && hits[1].t < hits[0].t) { /* the corrections kept them ordered */
+                hits[1].t_err += hits[0].t - hits[1].t;
+                hits[1].t = hits[0].t;
+            }
         }
         return kept;
     }
@@ -1855,5 +1862,6 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__LKAHAN
 #undef CYL__LHI
 #undef CYL__WIDE
+#undef CYL__LD
 
 #endif /* CYL__BODY */

@@ -293,6 +293,15 @@ static void test_float_wide_t_err_rounded_down(void)
   replay_finding("float-wide-t-err-rounded-down", FIXED);
 }
 
+/* Finding 25 (fixed by the commit that added it). Double, CYL_CAPS | CYL_PRECISE compared with
+ * the default path: a subnormal, odd h, so the fast path's h/2 rounded; its cap crossing and
+ * bound were for a plane half a subnormal ulp off, 650 ulps from CYL_PRECISE's crossing. The
+ * fast path now hands an h/2 that rounds over to the solver. */
+static void test_double_subnormal_height_cap_bound(void)
+{
+  replay_finding("double-subnormal-height-cap-bound", FIXED);
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -325,5 +334,6 @@ int main(void)
   RUN_TEST(test_double_far_segment_spurious_wall_hits);
   RUN_TEST(test_double_precise_tier_hit_on_clear_miss);
   RUN_TEST(test_float_wide_t_err_rounded_down);
+  RUN_TEST(test_double_subnormal_height_cap_bound);
   return UNITY_END();
 }
