@@ -102,8 +102,10 @@
    tmin/tmax) carry the plain roundings: within a few ulps of a threshold they can go either
    way, and farther for origins far from the axis (the rounding of o − c is about u·|o − c|/r
    of e). t_err is rigorous on every path (note 8). Inputs outside the range where nothing
-   overflows or underflows are first scaled by powers of two; invalid input and degenerate
-   cases go to the compensated solver of notes 1-7, which then answers alone.
+   overflows or underflows are first scaled by powers of two. The compensated solver of notes
+   1-7 answers alone for invalid input, degenerate cases, an h/2 that rounds, and origins
+   farther than 2^30 radii or half heights (2^12 when the fast path computes in float), where
+   the rounding of o − c alone would be 2^-23 (2^-12) of e or of the rim margin.
    CYL_PRECISE runs that compensated solver on every call, with every wall coefficient
    compensated and the rim decided from the corrected roots (note 7). For the float API
    computed in double with a hardware FMA it takes the fast path instead wherever that is as
