@@ -1609,19 +1609,25 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                 const CYL__P(fx) *x = &c[sel[i]];
                 CYL__N(hit) *o = &hits[i];
                 CYL__L t = x->t, tu, nl[3] = {0, 0, 0}, y[3], face = 1, et;
+                CYL__L tdev = 0; /* |t·tsc − tu| where the frame's t is not exactly tu */
                 CYL__R tr;
+                tu = t * tsc;
 #if !CYL__WIDE
                 if (x->sg || !tangent) {
-                    /* the crossing to an ulp, kept in the accepted range */
+                    /* the crossing to an ulp, kept in the accepted range (in the caller's
+                       units: tmin/tsc can be subnormal in the frame, fuzz finding 27) */
                     t = x->sg ? CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg)
                               : CYL__P(fref)(ray, cyl, a, d, r, lf, A, sq, t, sel[i]);
-                    if (t * tsc < tmin) t = tmin / tsc;
-                    if (t * tsc > tmax) t = tmax / tsc;
+                    tu = t * tsc;
+                    if (tu < tmin || tu > tmax) {
+                        tu = tu < tmin ? tmin : tmax;
+                        t = tu / tsc;
+                        tdev = CYL__P(labs)(t * tsc - tu);
+                    }
                 }
 #else
                 (void)lf;
 #endif
-                tu = t * tsc;
                 tr = (CYL__R)tu;
                 o->t = tr;
                 o->part = x->sg ? (x->sg > 0 ? CYL_CAP_HIGH : CYL_CAP_LOW) : CYL_SIDE;
@@ -1714,7 +1720,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                         et = aad > 0 ? g / aad : (CYL__L)CYL__MAXR * 2;
                     }
                     /* in the caller's units, plus the rounding to the API's type, rounded up */
-                    et = et * sf * tsc + CYL__P(labs)(tu - (CYL__L)tr);
+                    et = et * sf * tsc + tdev + CYL__P(labs)(tu - (CYL__L)tr);
                     if (CYL__P(labs)(tu) < tiny) et += tiny * 2 * u;
                     {
                         /* in the API's type, rounded up: where it rounded down (the wider
