@@ -106,11 +106,15 @@
    1-7 answers alone for invalid input, degenerate cases, an h/2 that rounds, and origins
    farther than 2^30 radii or half heights (2^12 when the fast path computes in float), where
    the rounding of o − c alone would be 2^-23 (2^-12) of e or of the rim margin.
-   CYL_PRECISE runs that compensated solver on every call, with every wall coefficient
-   compensated and the rim decided from the corrected roots (note 7). For the float API
-   computed in double with a hardware FMA it takes the fast path instead wherever that is as
-   good: |o − c| below 2^28 r and 2^28 h/2, where double's roundings stay under 2^-20 of every
-   margin, inside float's band of 2^-16.
+   CYL_PRECISE starts on the fast path too, but certifies every decision: each is taken only
+   where the computed value is farther from its threshold than an a-priori bound on its error
+   (the parallel test, D against the tangent band, each root against the rims, each crossing
+   against tmin and tmax, and a start close enough for the final correction); anything closer,
+   every tangent or parallel contact, and origins on the surface within the roundings go to
+   the compensated solver, with every wall coefficient compensated and the rim decided from
+   the corrected roots (note 7). For the float API computed in double with a hardware FMA the
+   bound is global: |o − c| below 2^28 r and 2^28 h/2 keeps double's roundings under 2^-20 of
+   every margin, inside float's band of 2^-16.
 
    CONFIGURATION (define before including)
    =============
@@ -719,7 +723,7 @@ CYL__INL int CYL__P(fastok)(unsigned opts)
     return 0;
 #else
     return !(opts & ~(unsigned)CYL__SUPPORTED) &&
-           (!(opts & CYL_PRECISE) || (CYL__WIDE && CYL__LKAHAN));
+           (!(opts & CYL_PRECISE) || !CYL__WIDE || CYL__LKAHAN);
 #endif
 }
 
@@ -1341,6 +1345,7 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, un
    arithmetic, LMIN terms cover underflow below the range check's floor. */
 typedef struct CYL__P(fx) { /* one crossing of the fast path */
     CYL__L t;               /* frame t */
+    CYL__L et;              /* CYL_PRECISE: a bound on |t − exact t| (else 0) */
     int sg;                 /* wall 0, low cap −1, high cap +1 */
     int ok;                 /* the crossing exists */
 } CYL__P(fx);
@@ -1447,11 +1452,12 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
     const CYL__L u = CYL__LU, sf = (CYL__L)1 + (CYL__L)1 / 64, tiny = CYL__LMIN;
     const CYL__L hi = CYL__LHI, lo = 1 / CYL__LHI;
     CYL__L a[3], d[3], w[3], s[3], m[3], r, H, aa, dd, A, MM, R2, sq = 0;
-    CYL__L aw, ad, na, Hn, tsc = 1, vsc = 1;
+    CYL__L aw, ad, na, Hn, tsc = 1, vsc = 1, thr;
+    CYL__L ma = 0, md = 0, ms = 0, mwc = 0, es = 0, em = 0, eA = 0, eaw = 0, ead = 0, eHn = 0;
     CYL__R lf[2] = {1, 1}; /* the frame's length scale, as two factors */
     CYL__P(fx) c[2];
     int i, k, caps = (opts & CYL_CAPS) != 0, hfin = cyl->h <= CYL__MAXR, tangent = 0;
-    int parallel, scaled = 0;
+    int parallel, scaled = 0, ce = (opts & CYL_PRECISE) && !CYL__WIDE;
 
     for (i = 0; i < 3; i++) {
         a[i] = (CYL__L)cyl->a[i];
@@ -1529,22 +1535,55 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
             return -1;
     }
     A = CYL__P(ldot)(s, s);
-    /* sin²(angle) = A / (|a|²|d|²) against the parallel tolerance */
-    parallel = A <= (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * aa * dd;
     aw = CYL__P(ldot)(a, w);
     ad = CYL__P(ldot)(a, d);
     na = CYL__LSQRT(aa);
     Hn = hfin ? H * na : 0;
+    /* sin²(angle) = A / (|a|²|d|²) against the parallel tolerance */
+    thr = (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * aa * dd;
+    parallel = A <= thr;
+    if (ce) {
+        /* CYL_PRECISE in the API's own type: every decision below is taken only where the
+           computed value is farther from its threshold than an a-priori bound on its error
+           (standard model; first order, sf covers the rest), else the solver answers. The
+           bounds: componentwise on s, m (with the rounding of o − c), then A, P, D, B, C, the
+           roots, a·w, a·d, H|a|. */
+        CYL__L mw = CYL__P(lmax3)(w);
+        ma = CYL__P(lmax3)(a);
+        md = CYL__P(lmax3)(d);
+        ms = CYL__P(lmax3)(s);
+#if CYL__LKAHAN
+        es = 2 * u * ms * (1 + 4 * u);
+#else
+        es = 4 * u * ma * md * (1 + 4 * u);
+#endif
+        em = 6 * u * ma * mw * (1 + 4 * u);
+        eA = 3 * u * A + es * (6 * ms + 3 * es) + tiny;
+        eaw = 12 * u * ma * mw + tiny;
+        ead = 9 * u * ma * md + tiny;
+        eHn = 4 * u * Hn + tiny;
+        mwc = mw;
+        /* parallel rays go to the solver (|sin| <= u: rare in double) */
+        if (!(A - eA > thr * (1 + 8 * u)) || !(eA < A * (CYL__L)0.25)) return -1;
+    }
     c[0].ok = c[1].ok = 0;
     c[0].sg = c[1].sg = 0;
-    c[0].t = c[1].t = 0;
+    c[0].t = c[1].t = c[0].et = c[1].et = 0;
     if (!parallel) {
-        CYL__L r2 = r * r, band, ta, tb, P, D, B, C, Dp, q, tw[2];
+        CYL__L r2 = r * r, band, ta, tb, P, D, B, C, Dp, q, tw[2], eD = 0, esq = 0;
         int swap;
         /* D = r²A − P² = A(r² − ρ²), P = w·s: the wall is crossed iff D >= 0 */
         P = CYL__P(ldot)(w, s);
         D = CYL__LMADD(r2, A, -(P * P));
         band = (CYL__L)CYL__TANG * r2 * A;
+        if (ce) {
+            /* certified: beside, or clearly crossed; a contact near the tangent band (either
+               side of it) goes to the solver */
+            CYL__L eP = 3 * mwc * (4 * u * ms + (1 + u) * es) + tiny;
+            eD = (r2 * (3 * u * A + eA) + (3 * u * CYL__P(labs)(P) + 2 * eP) *
+                  (CYL__P(labs)(P) + eP) + u * CYL__P(labs)(D)) * sf + tiny;
+            if (!(D < -band - eD) && !(D > band + eD)) return -1;
+        }
         if (D >= -band) {
             tangent = D <= band;
             if (!tangent || !(opts & CYL_NO_TANGENT)) {
@@ -1560,11 +1599,41 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                 swap = ta > tb;
                 tw[0] = swap ? tb : ta;
                 tw[1] = swap ? ta : tb;
+                if (ce) {
+                    /* the roots' bounds: q' = −(B + sgn(B̂)√(|a|²D)) exact, |q − q'| <= eq,
+                       t = q/A or C/q (1/(x(1 − ε)) <= (1 + 2ε)/x for ε <= 1/4) */
+                    CYL__L eB, eC, aq = CYL__P(labs)(q), rq, rA = eA / A, g, e0, e1;
+                    eB = 6 * ma * mwc * (6 * u * ms + 2 * es) + tiny;
+                    eC = 3 * u * MM + em * (12 * ma * mwc + 3 * em) + 7 * u * R2 +
+                         u * CYL__P(labs)(C) + tiny;
+                    esq = aa * (eD + 4 * u * Dp) / sq + u * sq;
+                    rq = (eB + esq + u * (sq + aq)) / aq;
+                    if (!(rq < (CYL__L)0.25)) return -1;
+                    g = rq * (1 + 2 * rq) + rA * (1 + 2 * rA) + u;
+                    e0 = CYL__P(labs)(ta) * g * (1 + 2 * rA) * (1 + 2 * g) * sf;
+                    e1 = ((eC / aq + CYL__P(labs)(tb) * rq) * (1 + 2 * rq) + u * CYL__P(labs)(tb)) *
+                         sf;
+                    c[0].et = swap ? e1 : e0;
+                    c[1].et = swap ? e0 : e1;
+                }
                 for (k = 0; k < 2; k++) {
                     /* the root against the cap planes: v|a| = a·w + t·a·d against ±H|a| */
                     CYL__L vn = CYL__LMADD(tw[k], ad, aw);
                     c[k].sg = !hfin || CYL__P(labs)(vn) <= Hn ? 0 : (vn < 0 ? -1 : 1);
                     c[k].t = tw[k];
+                    /* the correction in the output solves the exact quadratic around its start
+                       with this √(|a|²D): its error is the start's times that of √, which must
+                       stay under an ulp of max(|t|, r/|d|) (rays near the axis direction
+                       without an FMA start far off) */
+                    if (ce && !(c[k].et * esq * md <=
+                                (CYL__L)0.25 * u * sq * (CYL__P(labs)(tw[k]) * md + r)))
+                        return -1;
+                    if (ce && hfin) {
+                        CYL__L av = CYL__P(labs)(vn), ev;
+                        ev = (eaw + eHn + CYL__P(labs)(tw[k]) * (ead + 6 * u * ma * md) +
+                              (3 * ma * md + ead) * c[k].et + u * av) * sf;
+                        if (!(av > Hn + ev) && !(av < Hn - ev)) return -1;
+                    }
                 }
                 /* the roots are ordered, so the ray runs from one side to the other: the solid
                    is entered through the cap of side 0 (or the wall), left through that of
@@ -1573,7 +1642,14 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                     if (!c[k].sg) {
                         c[k].ok = 1;
                     } else if (caps && c[0].sg != c[1].sg) {
-                        c[k].t = ((CYL__L)c[k].sg * Hn - aw) / ad;
+                        CYL__L num = (CYL__L)c[k].sg * Hn - aw, aad = CYL__P(labs)(ad);
+                        c[k].t = num / ad;
+                        if (ce) {
+                            if (!(aad > 2 * ead)) return -1;
+                            c[k].et = ((eHn + eaw + u * CYL__P(labs)(num) +
+                                        CYL__P(labs)(c[k].t) * ead) * 2 / aad +
+                                       u * CYL__P(labs)(c[k].t)) * sf;
+                        }
                         /* a grazing interval's cap end must still lie on its disk */
                         c[k].ok = !tangent || CYL__P(fdisk)(m, s, R2, c[k].t);
                     }
@@ -1593,7 +1669,10 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
         CYL__L tmin = (CYL__L)ray->tmin, tmax = (CYL__L)ray->tmax;
         int kept = 0, sel[2] = {0, 0};
         for (k = 0; k < 2; k++) {
-            CYL__L tu = c[k].t * tsc;
+            CYL__L tu = c[k].t * tsc, eu = c[k].et * tsc;
+            if (ce && c[k].ok && !(tu + eu < tmin || tu - eu > tmax) &&
+                !(tu - eu > tmin && tu + eu < tmax))
+                return -1; /* CYL_PRECISE: too close to tmin or tmax to tell */
             if (c[k].ok && tu >= tmin && tu <= tmax && CYL__P(labs)(tu) <= (CYL__L)CYL__MAXR) {
                 sel[kept] = k;
                 kept++;
@@ -1686,12 +1765,15 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                        hence on f(t) = |y|² − r²|a|² and on f'(t)/2 = y·s; the nearest root of
                        the exact quadratic is within min(F/G, √(F/A)). A cap: the plane's
                        residual a·x(t) ∓ H|a| over a·d. */
-                    CYL__L ma = CYL__P(lmax3)(a), mw = CYL__P(lmax3)(w), ms = CYL__P(lmax3)(s);
-                    CYL__L at = CYL__P(labs)(t), em = 6 * u * ma * mw * (1 + 4 * u), es;
+                    CYL__L mw = CYL__P(lmax3)(w), at = CYL__P(labs)(t);
+                    ma = CYL__P(lmax3)(a);
+                    md = CYL__P(lmax3)(d);
+                    ms = CYL__P(lmax3)(s);
+                    em = 6 * u * ma * mw * (1 + 4 * u);
 #if CYL__LKAHAN
                     es = 2 * u * ms * (1 + 4 * u);
 #else
-                    es = 4 * u * ma * CYL__P(lmax3)(d) * (1 + 4 * u);
+                    es = 4 * u * ma * md * (1 + 4 * u);
 #endif
                     if (!x->sg) {
                         CYL__L y1, Ey, Y, F, EF, G, EG, Alo;
@@ -1711,11 +1793,12 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                         if (G > 0 && G * G > (2 * A - Alo) * F) et = F / G;
                         else et = Alo > 0 ? CYL__LSQRT(F / Alo) : (CYL__L)CYL__MAXR * 2;
                     } else {
-                        CYL__L ead = 9 * u * ma * CYL__P(lmax3)(d) + tiny, g, aad;
+                        CYL__L g, aad;
+                        ead = 9 * u * ma * md + tiny;
                         g = CYL__LMADD(t, ad, aw) - (CYL__L)x->sg * Hn;
                         aad = CYL__P(labs)(ad) - ead;
                         g = CYL__P(labs)(g) +
-                            (12 * u * ma * mw + at * (ead + 6 * u * ma * CYL__P(lmax3)(d)) +
+                            (12 * u * ma * mw + at * (ead + 6 * u * ma * md) +
                              6 * u * Hn + u * (CYL__P(labs)(aw) + at * CYL__P(labs)(ad))) * sf + tiny;
                         et = aad > 0 ? g / aad : (CYL__L)CYL__MAXR * 2;
                     }
