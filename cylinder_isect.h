@@ -1668,11 +1668,16 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
     {
         CYL__L tmin = (CYL__L)ray->tmin, tmax = (CYL__L)ray->tmax;
         int kept = 0, sel[2] = {0, 0};
-        for (k = 0; k < 2; k++) {
+        for (k = 0; ce && k < 2; k++) {
+            /* CYL_PRECISE: a crossing too close to tmin or tmax to tell goes to the solver, for
+               every entry point alike (fuzz finding 28) */
             CYL__L tu = c[k].t * tsc, eu = c[k].et * tsc;
-            if (ce && c[k].ok && !(tu + eu < tmin || tu - eu > tmax) &&
+            if (c[k].ok && !(tu + eu < tmin || tu - eu > tmax) &&
                 !(tu - eu > tmin && tu + eu < tmax))
-                return -1; /* CYL_PRECISE: too close to tmin or tmax to tell */
+                return -1;
+        }
+        for (k = 0; k < 2; k++) {
+            CYL__L tu = c[k].t * tsc;
             if (c[k].ok && tu >= tmin && tu <= tmax && CYL__P(labs)(tu) <= (CYL__L)CYL__MAXR) {
                 sel[kept] = k;
                 kept++;
