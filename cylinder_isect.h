@@ -479,6 +479,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LMADD(a, b, c) CYL__DMADD(a, b, c)
 #define CYL__LKAHAN CYL__DKAHAN
 #define CYL__LHI 2.037035976334486e90 /* 2^300 */
+#define CYL__LDIR 1.329227995784916e36 /* 2^120 */
 #else
 #define CYL__L float
 #define CYL__LU (FLT_EPSILON * 0.5f)
@@ -490,6 +491,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LMADD(a, b, c) CYL__FMADD(a, b, c)
 #define CYL__LKAHAN CYL__FKAHAN
 #define CYL__LHI 1099511627776.0f /* 2^40 */
+#define CYL__LDIR 4096.0f /* 2^12 */
 #endif
 
 typedef struct CYL__N(ray) { CYL__R o[3], d[3], tmin, tmax; } CYL__N(ray);
@@ -1482,9 +1484,11 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
         R2 = r * r * aa;
         /* The range check is the validation too: NaN, infinities, zero vectors and r, h <= 0
            fail it. Inside it no quantity below overflows, and none that decides or bounds
-           anything underflows: they are products of |a|²|d|² and |m|² + r²|a|². */
-        if (aa * dd >= lo && aa * dd <= hi && MM + R2 <= hi && R2 >= lo && r > 0 &&
-            cyl->h > 0 && ray->tmin <= ray->tmax)
+           anything underflows: they are products of |a|², |d|² and |m|² + r²|a|² (r²|s|² <=
+           r²|a|²·|d|², so |a|² and |d|² are bounded each, not only their product: fuzz
+           finding 29). */
+        if (aa >= 1 / CYL__LDIR && aa <= CYL__LDIR && dd >= 1 / CYL__LDIR && dd <= CYL__LDIR &&
+            MM + R2 <= hi && R2 >= lo && r > 0 && cyl->h > 0 && ray->tmin <= ray->tmax)
             break;
         if (scaled++ || CYL__P(validate)(ray, cyl)) return -1;
         {
@@ -1957,6 +1961,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__LMADD
 #undef CYL__LKAHAN
 #undef CYL__LHI
+#undef CYL__LDIR
 #undef CYL__WIDE
 #undef CYL__LD
 

@@ -302,6 +302,16 @@ static void test_double_subnormal_height_cap_bound(void)
   replay_finding("double-subnormal-height-cap-bound", FIXED);
 }
 
+/* Finding 29 (fixed by the commit that added it). Double, from_segment: an axis 2^-365 long,
+ * r = 2^503 and |d| = 2^497. |a|²|d|² and |m|² + r²|a|² were inside the fast path's range
+ * check, but r²|s|² (up to r²|a|²|d|²) overflowed: D and the tangent band became infinite and a
+ * ray along the axis (e = 1) was flagged tangent. Found by scripts/ci-fuzz.sh in a fresh
+ * clone. */
+static void test_double_huge_radius_tiny_axis_overflow(void)
+{
+  replay_finding("double-huge-radius-tiny-axis-overflow", FIXED);
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -335,5 +345,6 @@ int main(void)
   RUN_TEST(test_double_precise_tier_hit_on_clear_miss);
   RUN_TEST(test_float_wide_t_err_rounded_down);
   RUN_TEST(test_double_subnormal_height_cap_bound);
+  RUN_TEST(test_double_huge_radius_tiny_axis_overflow);
   return UNITY_END();
 }
