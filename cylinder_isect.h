@@ -189,10 +189,10 @@
    exact t in all 400,458 float and 413,701 double hits; default path: no misclassification
    beyond the band in any family for float (in double) and in the benign ones for double,
    t within 0.5 ulps on the well-conditioned hits of the benign families in both; CYL_PRECISE:
-   none beyond the band in any family, 0.5 ulps. Time per call there: float 120 ns (precise
-   121), double 218 ns (precise 300), against 64 / 61 ns for the end-point formulation and
-   72 / 98 ns for the literal one; those two misclassify 18,787 / 14,463 and 17,748 / 9,238
-   cases beyond the band.
+   none beyond the band in any family, 0.5 ulps. Time per call there: float 136 ns (precise
+   137), double 205 ns (precise 274), against 74 / 59 ns for the end-point formulation and
+   85 / 94 ns for the literal one (a shared machine: compare within one run); those two
+   misclassify 18,787 / 14,463 and 17,748 / 9,238 cases beyond the band.
    Extreme ratios: when r is below 2^-31 (float) or 2^-435 (double) of |o − c|, r² underflows
    in the frame: the wall test then compares distances linearly, may misjudge rays within the
    rounding of o − c of the axis, and reports t_err = +inf; when h/2 exceeds |o − c| and r by
