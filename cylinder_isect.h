@@ -647,6 +647,13 @@ CYL__INL CYL__R CYL__P(dot2)(const CYL__R x[3], const CYL__R y[3])
     return s.hi + s.lo;
 }
 
+/* s as a normalised double word: hi = s rounded, lo what is left (Fast2Sum). */
+CYL__INL void CYL__P(acc_split)(CYL__P(acc) s, CYL__R *hi, CYL__R *lo)
+{
+    *hi = s.hi + s.lo;
+    *lo = s.lo - (*hi - s.hi);
+}
+
 /* One component x_k (yh + yl)_l − x_l (yh + yl)_k as hi + lo. */
 CYL__INL void CYL__P(dop_dw)(CYL__R xk, CYL__R xl, CYL__R yhl, CYL__R yhk, CYL__R yll,
                             CYL__R ylk, CYL__R *zh, CYL__R *zl)
@@ -840,8 +847,7 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
     {
         /* |a|² as a double word aa + aal (the cap planes and r²|a|² use the low part) */
         CYL__P(acc) sa = CYL__P(dot_acc)(f->a, f->a);
-        f->aa = sa.hi + sa.lo;
-        f->aal = sa.lo - (f->aa - sa.hi);
+        CYL__P(acc_split)(sa, &f->aa, &f->aal);
     }
     f->na = CYL__SQRTR(f->aa);
 }
@@ -868,8 +874,7 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
         CYL__P(cross_dw)(f->a, f->w, f->wl, f->m, f->ml);
         sp.hi = sp.lo = sb.hi = sb.lo = sc.hi = sc.lo = sd.hi = sd.lo = 0;
         CYL__P(acc_dot_dw)(&sp, f->w, f->wl, f->s, f->sl);
-        P = sp.hi + sp.lo;
-        Pl = sp.lo - (P - sp.hi);
+        CYL__P(acc_split)(sp, &P, &Pl);
         CYL__P(acc_dot_dw)(&sb, f->m, f->ml, f->s, f->sl);
         B = sb.hi + sb.lo;
         /* C = |m|² − r²|a|² and D = r²|s|² − P², each as one compensated sum; r²|a|² is
@@ -882,8 +887,7 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
             CYL__P(acc_prod)(&sd, rs, rs);
             sd.lo += 2 * rs * (rsl + f->r * f->sl[i]);
         }
-        f->R2 = sc.hi + sc.lo;
-        f->R2l = sc.lo - (f->R2 - sc.hi);
+        CYL__P(acc_split)(sc, &f->R2, &f->R2l);
         sc.hi = -sc.hi;
         sc.lo = -sc.lo;
         CYL__P(acc_dot_dw)(&sc, f->m, f->ml, f->m, f->ml);
@@ -1084,11 +1088,9 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
            therefore carried as double words (Dot2; |a| with one correction of the square
            root), on every path: caps are the part of the default path they make accurate. */
         CYL__P(acc) s1 = CYL__P(dot_acc)(f->a, f->d), s2 = CYL__P(dot_acc)(f->a, f->w);
-        f->ad = s1.hi + s1.lo;
-        f->adl = s1.lo - (f->ad - s1.hi);
+        CYL__P(acc_split)(s1, &f->ad, &f->adl);
         s2.lo += CYL__P(dot)(f->a, f->wl);
-        f->aw = s2.hi + s2.lo;
-        f->awl = s2.lo - (f->aw - s2.hi);
+        CYL__P(acc_split)(s2, &f->aw, &f->awl);
         f->nal = (CYL__FMAR(-f->na, f->na, f->aa) + f->aal) / (2 * f->na);
     } else {
         f->ad = CYL__P(dot)(f->a, f->d);
@@ -1385,6 +1387,19 @@ CYL__INL int CYL__P(fdisk)(const CYL__L m[3], const CYL__L s[3], CYL__L R2, CYL_
 }
 
 #if !CYL__WIDE
+/* o − c exactly, as wh + wl (TwoSum), times the frame's length scale lf (two factors that move
+   it the same way, so only a subnormal result rounds). */
+CYL__INL void CYL__P(fwexact)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                             const CYL__R lf[2], CYL__R wh[3], CYL__R wl[3])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        CYL__P(two_sum)(ray->o[i], -cyl->c[i], &wh[i], &wl[i]);
+        wh[i] = wh[i] * lf[0] * lf[1];
+        wl[i] = wl[i] * lf[0] * lf[1];
+    }
+}
+
 /* The cap crossing (sg·H|a| − a·w)/(a·d) to about an ulp (CYL__L is the API's type here): from
    the exact o − c (TwoSum, times the frame's length scale lf), with a·w, a·d and |a| as double
    words (Dot2; one correction of the square root), as the solver's slab forms it. The plain
@@ -1394,23 +1409,14 @@ CYL__INL CYL__R CYL__P(fcapt)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
                              int sg)
 {
     CYL__R wh[3], wl[3], aa, aal, na, nal, ad, adl, sH = (CYL__R)sg * H;
-    CYL__P(acc) sa, sw, sd, num;
-    int i;
-    for (i = 0; i < 3; i++) {
-        CYL__P(two_sum)(ray->o[i], -cyl->c[i], &wh[i], &wl[i]);
-        wh[i] = wh[i] * lf[0] * lf[1];
-        wl[i] = wl[i] * lf[0] * lf[1];
-    }
-    sa = CYL__P(dot_acc)(a, a);
-    aa = sa.hi + sa.lo;
-    aal = sa.lo - (aa - sa.hi);
+    CYL__P(acc) sw, num;
+    CYL__P(fwexact)(ray, cyl, lf, wh, wl);
+    CYL__P(acc_split)(CYL__P(dot_acc)(a, a), &aa, &aal);
     na = CYL__SQRTR(aa);
     nal = (CYL__FMAR(-na, na, aa) + aal) / (2 * na);
     sw = CYL__P(dot_acc)(a, wh);
     sw.lo += CYL__P(dot)(a, wl);
-    sd = CYL__P(dot_acc)(a, d);
-    ad = sd.hi + sd.lo;
-    adl = sd.lo - (ad - sd.hi);
+    CYL__P(acc_split)(CYL__P(dot_acc)(a, d), &ad, &adl);
     num = CYL__P(acc_first)(sH, na);
     num.lo += sH * nal - sw.lo;
     CYL__P(acc_add)(&num, -sw.hi);
@@ -1427,24 +1433,42 @@ CYL__INL CYL__R CYL__P(fref)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
     CYL__R s[3], sl[3], m[3], ml[3], R2, R2l;
     CYL__R wh[3], wl[3], zero[3] = {0, 0, 0}, r2 = r * r, r2l = CYL__FMAR(r, r, -r2), aa, aal;
     CYL__R hi, lo;
-    CYL__P(acc) sa;
-    int i;
-    for (i = 0; i < 3; i++) {
-        CYL__P(two_sum)(ray->o[i], -cyl->c[i], &wh[i], &wl[i]);
-        wh[i] = wh[i] * lf[0] * lf[1];
-        wl[i] = wl[i] * lf[0] * lf[1];
-    }
+    CYL__P(fwexact)(ray, cyl, lf, wh, wl);
     CYL__P(cross_dw)(a, d, zero, s, sl);
     CYL__P(cross_dw)(a, wh, wl, m, ml);
-    sa = CYL__P(dot_acc)(a, a);
-    aa = sa.hi + sa.lo;
-    aal = sa.lo - (aa - sa.hi);
+    CYL__P(acc_split)(CYL__P(dot_acc)(a, a), &aa, &aal);
     R2 = r2 * aa;
     R2l = CYL__FMAR(r2, aa, -R2) + r2 * aal + r2l * aa;
     CYL__P(refine)(s, sl, m, ml, A, R2, R2l, sq, t, upper, &hi, &lo);
     return hi;
 }
 #endif
+
+/* Componentwise bounds on the errors of s = a × d (es) and m = a × w (em, with the rounding
+   of o − c), from the largest components of a, d, s (returned too) and w. */
+CYL__INL void CYL__P(ferr)(const CYL__L a[3], const CYL__L d[3], const CYL__L s[3], CYL__L mw,
+                          CYL__L *ma, CYL__L *md, CYL__L *ms, CYL__L *es, CYL__L *em)
+{
+    const CYL__L u = CYL__LU;
+    *ma = CYL__P(lmax3)(a);
+    *md = CYL__P(lmax3)(d);
+    *ms = CYL__P(lmax3)(s);
+#if CYL__LKAHAN
+    *es = 2 * u * *ms * (1 + 4 * u);
+#else
+    *es = 4 * u * *ma * *md * (1 + 4 * u);
+#endif
+    *em = 6 * u * *ma * mw * (1 + 4 * u);
+}
+
+/* Two crossings whose corrections crossed over are kept ordered, the bound widened to match. */
+CYL__INL void CYL__P(order2)(CYL__N(hit) hits[2])
+{
+    if (hits[1].t < hits[0].t) {
+        hits[1].t_err += hits[0].t - hits[1].t;
+        hits[1].t = hits[0].t;
+    }
+}
 
 /* want: 0 occluded (returns 1 or 0), 1 the nearest hit into hits[0], 2 every hit.
    Returns -1 (nothing written) when the solver must answer. */
@@ -1455,7 +1479,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
     const CYL__L hi = CYL__LHI, lo = 1 / CYL__LHI;
     CYL__L a[3], d[3], w[3], s[3], m[3], r, H, aa, dd, A, MM, R2, sq = 0;
     CYL__L aw, ad, na, Hn, tsc = 1, vsc = 1, thr;
-    CYL__L ma = 0, md = 0, ms = 0, mwc = 0, es = 0, em = 0, eA = 0, eaw = 0, ead = 0, eHn = 0;
+    CYL__L mw, ma = 0, md = 0, ms = 0, es = 0, em = 0, eA = 0, eaw = 0, ead = 0, eHn = 0;
     CYL__R lf[2] = {1, 1}; /* the frame's length scale, as two factors */
     CYL__P(fx) c[2];
     int i, k, caps = (opts & CYL_CAPS) != 0, hfin = cyl->h <= CYL__MAXR, tangent = 0;
@@ -1495,8 +1519,8 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
             /* exact power-of-two scaling: max(|w|, r) and the largest components of a and d
                into [1, 2); scaling d changes the unit of t */
             CYL__R f[2];
-            CYL__L mw = CYL__P(lmax3)(w);
             int ev = 0, et, kdx = CYL__P(ilogb)(CYL__P(amax3)(ray->d));
+            mw = CYL__P(lmax3)(w);
             if (!(mw <= CYL__LMAX)) return -1;
             if (!CYL__WIDE) { /* every float length is in range in double */
                 ev = CYL__P(ilogb)((CYL__R)(mw > r ? mw : r));
@@ -1524,7 +1548,8 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
            2^12 (float) radii or half heights, where its rounding alone is 2^-23 (2^-12) of e or
            of the rim margin; and an h/2 that rounds (h subnormal in the frame). */
         const CYL__L far = CYL__LD ? (CYL__L)1073741824.0 : (CYL__L)4096.0;
-        CYL__L mw = CYL__P(lmax3)(w), hh = H;
+        CYL__L hh = H;
+        mw = CYL__P(lmax3)(w);
         H = hh * (CYL__L)0.5;
         if (!(mw <= far * r) || (hfin && !(mw <= far * H))) return -1;
         if (hfin && (H + H < hh || H + H > hh)) return -1;
@@ -1534,7 +1559,6 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
            e = 1 − ρ²/r², the rim and t amplified by at most |o − c|/r and |o − c|/(h/2)
            (s is accurate to 2u relative with the FMA): below 2^28 that is under 2^-20, inside
            the API type's band of 2^-16. Beyond, the compensated solver answers. */
-        CYL__L mw = CYL__P(lmax3)(w);
         if (!(mw <= r * (CYL__L)268435456.0) || (hfin && !(mw <= H * (CYL__L)268435456.0)))
             return -1;
     }
@@ -1552,21 +1576,11 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
            (standard model; first order, sf covers the rest), else the solver answers. The
            bounds: componentwise on s, m (with the rounding of o − c), then A, P, D, B, C, the
            roots, a·w, a·d, H|a|. */
-        CYL__L mw = CYL__P(lmax3)(w);
-        ma = CYL__P(lmax3)(a);
-        md = CYL__P(lmax3)(d);
-        ms = CYL__P(lmax3)(s);
-#if CYL__LKAHAN
-        es = 2 * u * ms * (1 + 4 * u);
-#else
-        es = 4 * u * ma * md * (1 + 4 * u);
-#endif
-        em = 6 * u * ma * mw * (1 + 4 * u);
+        CYL__P(ferr)(a, d, s, mw, &ma, &md, &ms, &es, &em);
         eA = 3 * u * A + es * (6 * ms + 3 * es) + tiny;
         eaw = 12 * u * ma * mw + tiny;
         ead = 9 * u * ma * md + tiny;
         eHn = 4 * u * Hn + tiny;
-        mwc = mw;
         /* parallel rays go to the solver (|sin| <= u: rare in double) */
         if (!(A - eA > thr * (1 + 8 * u)) || !(eA < A * (CYL__L)0.25)) return -1;
     }
@@ -1583,7 +1597,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
         if (ce) {
             /* certified: beside, or clearly crossed; a contact near the tangent band (either
                side of it) goes to the solver */
-            CYL__L eP = 3 * mwc * (4 * u * ms + (1 + u) * es) + tiny;
+            CYL__L eP = 3 * mw * (4 * u * ms + (1 + u) * es) + tiny;
             eD = (r2 * (3 * u * A + eA) + (3 * u * CYL__P(labs)(P) + 2 * eP) *
                   (CYL__P(labs)(P) + eP) + u * CYL__P(labs)(D)) * sf + tiny;
             if (!(D < -band - eD) && !(D > band + eD)) return -1;
@@ -1607,8 +1621,8 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                     /* the roots' bounds: q' = −(B + sgn(B̂)√(|a|²D)) exact, |q − q'| <= eq,
                        t = q/A or C/q (1/(x(1 − ε)) <= (1 + 2ε)/x for ε <= 1/4) */
                     CYL__L eB, eC, aq = CYL__P(labs)(q), rq, rA = eA / A, g, e0, e1;
-                    eB = 6 * ma * mwc * (6 * u * ms + 2 * es) + tiny;
-                    eC = 3 * u * MM + em * (12 * ma * mwc + 3 * em) + 7 * u * R2 +
+                    eB = 6 * ma * mw * (6 * u * ms + 2 * es) + tiny;
+                    eC = 3 * u * MM + em * (12 * ma * mw + 3 * em) + 7 * u * R2 +
                          u * CYL__P(labs)(C) + tiny;
                     esq = aa * (eD + 4 * u * Dp) / sq + u * sq;
                     rq = (eB + esq + u * (sq + aq)) / aq;
@@ -1774,16 +1788,8 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                        hence on f(t) = |y|² − r²|a|² and on f'(t)/2 = y·s; the nearest root of
                        the exact quadratic is within min(F/G, √(F/A)). A cap: the plane's
                        residual a·x(t) ∓ H|a| over a·d. */
-                    CYL__L mw = CYL__P(lmax3)(w), at = CYL__P(labs)(t);
-                    ma = CYL__P(lmax3)(a);
-                    md = CYL__P(lmax3)(d);
-                    ms = CYL__P(lmax3)(s);
-                    em = 6 * u * ma * mw * (1 + 4 * u);
-#if CYL__LKAHAN
-                    es = 2 * u * ms * (1 + 4 * u);
-#else
-                    es = 4 * u * ma * md * (1 + 4 * u);
-#endif
+                    CYL__L at = CYL__P(labs)(t);
+                    if (!ce) CYL__P(ferr)(a, d, s, mw, &ma, &md, &ms, &es, &em);
                     if (!x->sg) {
                         CYL__L y1, Ey, Y, F, EF, G, EG, Alo;
                         if (opts & CYL_NO_NORMAL)
@@ -1826,10 +1832,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                     if (CYL__P(abs)(tr) < CYL__MINR) o->t_err += CYL__MINR * 2 * CYL__U;
                 }
             }
-            if (kept == 2 && hits[1].t < hits[0].t) { /* the corrections kept them ordered */
-                hits[1].t_err += hits[0].t - hits[1].t;
-                hits[1].t = hits[0].t;
-            }
+            if (kept == 2) CYL__P(order2)(hits);
         }
         return kept;
     }
@@ -1860,10 +1863,7 @@ CYL__SLOW int CYL__P(slow_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *c
     if (rc) return rc;
     n = CYL__P(solve)(ray, cyl, opts, 1, &f, c);
     for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, ray, &hits[k]);
-    if (n == 2 && hits[1].t < hits[0].t) { /* the correction kept two near roots ordered */
-        hits[1].t_err += hits[0].t - hits[1].t;
-        hits[1].t = hits[0].t;
-    }
+    if (n == 2) CYL__P(order2)(hits);
     return n;
 }
 

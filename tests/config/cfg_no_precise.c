@@ -14,6 +14,17 @@
 void setUp(void) {}
 void tearDown(void) {}
 
+/* The ray x = -3 + t along x through the unit cylinder about z, h = 2, in both precisions. */
+static void scene(cylf_ray *rf, cylf_cylinder *cf, cyld_ray *rd, cyld_cylinder *cd)
+{
+    memset(rf, 0, sizeof *rf); memset(cf, 0, sizeof *cf);
+    memset(rd, 0, sizeof *rd); memset(cd, 0, sizeof *cd);
+    rf->o[0] = -3; rf->d[0] = 1; rf->tmax = (float)INFINITY;
+    cf->a[2] = 1; cf->r = 1; cf->h = 2;
+    rd->o[0] = -3; rd->d[0] = 1; rd->tmax = INFINITY;
+    cd->a[2] = 1; cd->r = 1; cd->h = 2;
+}
+
 static void test_precise_is_an_unknown_option(void)
 {
     cylf_ray rf;
@@ -22,13 +33,8 @@ static void test_precise_is_an_unknown_option(void)
     cyld_ray rd;
     cyld_cylinder cd;
     cyld_hit hd[2], hd0[2];
-    memset(&rf, 0, sizeof rf); memset(&cf, 0, sizeof cf);
-    memset(&rd, 0, sizeof rd); memset(&cd, 0, sizeof cd);
+    scene(&rf, &cf, &rd, &cd);
     memset(&hf, 0, sizeof hf); memset(&hd, 0, sizeof hd);
-    rf.o[0] = -3; rf.d[0] = 1; rf.tmax = (float)INFINITY;
-    cf.a[2] = 1; cf.r = 1; cf.h = 2;
-    rd.o[0] = -3; rd.d[0] = 1; rd.tmax = INFINITY;
-    cd.a[2] = 1; cd.r = 1; cd.h = 2;
     memset(&hf, 0x5A, sizeof hf); hf0 = hf;
     memset(hd, 0x5A, sizeof hd); memcpy(hd0, hd, sizeof hd);
     TEST_ASSERT_EQUAL_INT(CYL_E_OPTION, cylf_intersect(&rf, &cf, CYL_PRECISE, &hf));
@@ -47,13 +53,8 @@ static void test_default_path_unaffected(void)
     cyld_ray rd;
     cyld_cylinder cd;
     cyld_hit hd[2];
-    memset(&rf, 0, sizeof rf); memset(&cf, 0, sizeof cf);
-    memset(&rd, 0, sizeof rd); memset(&cd, 0, sizeof cd);
+    scene(&rf, &cf, &rd, &cd);
     memset(&hf, 0, sizeof hf); memset(&hd, 0, sizeof hd);
-    rf.o[0] = -3; rf.d[0] = 1; rf.tmax = (float)INFINITY;
-    cf.a[2] = 1; cf.r = 1; cf.h = 2;
-    rd.o[0] = -3; rd.d[0] = 1; rd.tmax = INFINITY;
-    cd.a[2] = 1; cd.r = 1; cd.h = 2;
     TEST_ASSERT_EQUAL_INT(CYL_HIT, cylf_intersect(&rf, &cf, CYL_CAPS | CYL_OUTWARD, &hf));
     TEST_ASSERT_TRUE(hf.t >= 2 && hf.t <= 2); /* exact case: t = 2 */
     TEST_ASSERT_EQUAL_INT(2, cyld_intersect_all(&rd, &cd, 0, hd));
