@@ -480,7 +480,13 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LKAHAN CYL__DKAHAN
 #define CYL__LHI 2.037035976334486e90 /* 2^300 */
 #define CYL__LDIR 1.329227995784916e36 /* 2^120 */
+#ifndef CYL_NO_FAST_PATH
+#define CYL__QUICK 1 /* the lean path (see there) */
 #else
+#define CYL__QUICK 0
+#endif
+#else
+#define CYL__QUICK 0
 #define CYL__L float
 #define CYL__LU (FLT_EPSILON * 0.5f)
 #define CYL__LMIN FLT_MIN
@@ -1461,6 +1467,66 @@ CYL__INL void CYL__P(ferr)(const CYL__L a[3], const CYL__L d[3], const CYL__L s[
     *em = 6 * u * *ma * mw * (1 + 4 * u);
 }
 
+/* A wall crossing's bound (NUMERICAL NOTES 8), in the frame: y = m + t·s as computed, Y = y·y,
+   Gs = y·s, at = |t|; es and em bound the errors of s and m componentwise, ms = max |s_i|.
+   Bounds on the rounding of y give F >= |f(t)| and G <= |f'(t)|/2; the nearest root of the
+   exact quadratic is within F/G where G² > A·F, else within √(F/A). */
+CYL__INL CYL__L CYL__P(wbound)(const CYL__L y[3], CYL__L Y, CYL__L Gs, CYL__L at, CYL__L A,
+                              CYL__L R2, CYL__L ms, CYL__L es, CYL__L em)
+{
+    const CYL__L u = CYL__LU, sf = (CYL__L)1 + (CYL__L)1 / 64, tiny = CYL__LMIN;
+    CYL__L y1, Ey, F, EF, G, EG, Alo;
+    y1 = CYL__P(labs)(y[0]) + CYL__P(labs)(y[1]) + CYL__P(labs)(y[2]);
+    Ey = em + at * (es + u * ms) + u * y1;
+    F = Y - R2;
+    EF = (3 * u * Y + Ey * (2 * y1 + 3 * Ey) + 6 * u * R2 + u * CYL__P(labs)(F)) * sf + tiny;
+    F = CYL__P(labs)(F) + EF;
+    G = CYL__P(labs)(Gs);
+    EG = (y1 * (3 * u * ms + es) + 3 * Ey * (ms + es)) * sf + tiny;
+    G -= EG;
+    Alo = A - (3 * u * A + es * (6 * ms + 3 * es)) * sf - tiny;
+    if (G > 0 && G * G > (2 * A - Alo) * F) return F / G;
+    return Alo > 0 ? CYL__LSQRT(F / Alo) : (CYL__L)CYL__MAXR * 2;
+}
+
+/* A cap crossing's bound, in the frame: the plane's residual a·x(t) − sHn (sHn = ±H|a|) over
+   a·d, with the roundings of a·w (and of o − c), a·d and H|a| (ma, md, mw: the largest
+   components of a, d and w). */
+CYL__INL CYL__L CYL__P(cbound)(CYL__L t, CYL__L ad, CYL__L aw, CYL__L sHn, CYL__L ma, CYL__L md,
+                              CYL__L mw)
+{
+    const CYL__L u = CYL__LU, sf = (CYL__L)1 + (CYL__L)1 / 64, tiny = CYL__LMIN;
+    CYL__L at = CYL__P(labs)(t), ead = 9 * u * ma * md + tiny, g, aad;
+    g = CYL__LMADD(t, ad, aw) - sHn;
+    aad = CYL__P(labs)(ad) - ead;
+    g = CYL__P(labs)(g) + (12 * u * ma * mw + at * (ead + 6 * u * ma * md) +
+                           6 * u * CYL__P(labs)(sHn) +
+                           u * (CYL__P(labs)(aw) + at * CYL__P(labs)(ad))) * sf + tiny;
+    return aad > 0 ? g / aad : (CYL__L)CYL__MAXR * 2;
+}
+
+/* The bound et (in the caller's units, about t's value tu in the wider type) of the returned
+   tr: plus the rounding of tu to the API's type, then in the API's type rounded up: where the
+   conversion rounded down (the wider type's bound, or a subnormal one), one ulp more (fuzz
+   findings 23, 24). */
+CYL__INL CYL__R CYL__P(errup)(CYL__L et, CYL__L tu, CYL__R tr)
+{
+    CYL__R te;
+    et += CYL__P(labs)(tu - (CYL__L)tr);
+    if (CYL__P(labs)(tu) < CYL__LMIN) et += CYL__LMIN * 2 * CYL__LU;
+#if CYL__WIDE
+    /* widened in the wider type before the conversion, which then cannot land below et (an
+       ulp is at most 2u|x|, or the subnormal step): no branch, and no subnormal operand,
+       which costs a microcode assist on x86 */
+    te = (CYL__R)(et * (1 + 4 * (CYL__L)CYL__U) + (CYL__L)CYL__MINR * 2 * (CYL__L)CYL__U);
+#else
+    te = (CYL__R)et;
+    if ((CYL__L)te < et) te += CYL__P(abs)(te) * (2 * CYL__U) + CYL__MINR * 2 * CYL__U;
+#endif
+    if (CYL__P(abs)(tr) < CYL__MINR) te += CYL__MINR * 2 * CYL__U;
+    return te;
+}
+
 /* Two crossings whose corrections crossed over are kept ordered, the bound widened to match. */
 CYL__INL void CYL__P(order2)(CYL__N(hit) hits[2])
 {
@@ -1468,6 +1534,40 @@ CYL__INL void CYL__P(order2)(CYL__N(hit) hits[2])
         hits[1].t_err += hits[0].t - hits[1].t;
         hits[1].t = hits[0].t;
     }
+}
+
+/* Exact power-of-two scaling into the fast path's range (valid input only): max(|w|, r) (the
+   double API) and the largest components of a and d into [1, 2); scaling d changes the unit of
+   t. r, h (whole or half) and w are scaled alike, lf holds the length factor (two halves, each
+   representable), tsc and vsc convert the frame's t and lengths to the caller's. Returns -1
+   where a factor is out of range: the solver answers. */
+CYL__INL int CYL__P(fscale)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, CYL__L a[3],
+                           CYL__L d[3], CYL__L w[3], CYL__L *r, CYL__L *h, CYL__R lf[2],
+                           CYL__L *tsc, CYL__L *vsc)
+{
+    CYL__R f[2];
+    int i, ev = 0, et, kdx = CYL__P(ilogb)(CYL__P(amax3)(ray->d));
+    CYL__L mw = CYL__P(lmax3)(w);
+    if (!(mw <= CYL__LMAX)) return -1;
+    if (!CYL__WIDE) { /* every float length is in range in double */
+        ev = CYL__P(ilogb)((CYL__R)(mw > *r ? mw : *r));
+        CYL__P(pow2pair)(-ev, f);
+        lf[0] = f[0];
+        lf[1] = f[1];
+        for (i = 0; i < 3; i++) w[i] = w[i] * (CYL__L)f[0] * (CYL__L)f[1];
+        *r = *r * (CYL__L)f[0] * (CYL__L)f[1];
+        *h = *h * (CYL__L)f[0] * (CYL__L)f[1];
+    }
+    CYL__P(pow2pair)(-CYL__P(ilogb)(CYL__P(amax3)(cyl->a)), f);
+    for (i = 0; i < 3; i++) a[i] = a[i] * (CYL__L)f[0] * (CYL__L)f[1];
+    CYL__P(pow2pair)(-kdx, f);
+    for (i = 0; i < 3; i++) d[i] = d[i] * (CYL__L)f[0] * (CYL__L)f[1];
+    et = ev - kdx;
+    if (et < 1 - CYL__EBIAS || et > CYL__EBIAS || ev < 1 - CYL__EBIAS || ev > CYL__EBIAS)
+        return -1;
+    *tsc = (CYL__L)CYL__P(exp2i)(et);
+    *vsc = (CYL__L)CYL__P(exp2i)(ev);
+    return 0;
 }
 
 /* want: 0 occluded (returns 1 or 0), 1 the nearest hit into hits[0], 2 every hit.
@@ -1514,34 +1614,9 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
         if (aa >= 1 / CYL__LDIR && aa <= CYL__LDIR && dd >= 1 / CYL__LDIR && dd <= CYL__LDIR &&
             MM + R2 <= hi && R2 >= lo && r > 0 && cyl->h > 0 && ray->tmin <= ray->tmax)
             break;
-        if (scaled++ || CYL__P(validate)(ray, cyl)) return -1;
-        {
-            /* exact power-of-two scaling: max(|w|, r) and the largest components of a and d
-               into [1, 2); scaling d changes the unit of t */
-            CYL__R f[2];
-            int ev = 0, et, kdx = CYL__P(ilogb)(CYL__P(amax3)(ray->d));
-            mw = CYL__P(lmax3)(w);
-            if (!(mw <= CYL__LMAX)) return -1;
-            if (!CYL__WIDE) { /* every float length is in range in double */
-                ev = CYL__P(ilogb)((CYL__R)(mw > r ? mw : r));
-                CYL__P(pow2pair)(-ev, f);
-                lf[0] = f[0];
-                lf[1] = f[1];
-                for (i = 0; i < 3; i++) w[i] = w[i] * (CYL__L)f[0] * (CYL__L)f[1];
-                r = r * (CYL__L)f[0] * (CYL__L)f[1];
-                H = H * (CYL__L)f[0] * (CYL__L)f[1];
-            }
-            CYL__P(pow2pair)(-CYL__P(ilogb)(CYL__P(amax3)(cyl->a)), f);
-            for (i = 0; i < 3; i++) a[i] = a[i] * (CYL__L)f[0] * (CYL__L)f[1];
-            CYL__P(pow2pair)(-kdx, f);
-            for (i = 0; i < 3; i++) d[i] = d[i] * (CYL__L)f[0] * (CYL__L)f[1];
-            et = ev - kdx;
-            if (et < 1 - CYL__EBIAS || et > CYL__EBIAS || ev < 1 - CYL__EBIAS ||
-                ev > CYL__EBIAS)
-                return -1;
-            tsc = (CYL__L)CYL__P(exp2i)(et);
-            vsc = (CYL__L)CYL__P(exp2i)(ev);
-        }
+        if (scaled++ || CYL__P(validate)(ray, cyl) ||
+            CYL__P(fscale)(ray, cyl, a, d, w, &r, &H, lf, &tsc, &vsc))
+            return -1;
     }
     {
         /* Hand over what the plain roundings cannot resolve: o − c beyond 2^30 (double) or
@@ -1791,45 +1866,15 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                     CYL__L at = CYL__P(labs)(t);
                     if (!ce) CYL__P(ferr)(a, d, s, mw, &ma, &md, &ms, &es, &em);
                     if (!x->sg) {
-                        CYL__L y1, Ey, Y, F, EF, G, EG, Alo;
                         if (opts & CYL_NO_NORMAL)
                             for (k = 0; k < 3; k++) y[k] = CYL__LMADD(t, s[k], m[k]);
-                        y1 = CYL__P(labs)(y[0]) + CYL__P(labs)(y[1]) + CYL__P(labs)(y[2]);
-                        Ey = em + at * (es + u * ms) + u * y1;
-                        Y = CYL__P(ldot)(y, y);
-                        F = Y - R2;
-                        EF = (3 * u * Y + Ey * (2 * y1 + 3 * Ey) + 6 * u * R2 +
-                              u * CYL__P(labs)(F)) * sf + tiny;
-                        F = CYL__P(labs)(F) + EF;
-                        G = CYL__P(labs)(CYL__P(ldot)(y, s));
-                        EG = (y1 * (3 * u * ms + es) + 3 * Ey * (ms + es)) * sf + tiny;
-                        G -= EG;
-                        Alo = A - (3 * u * A + es * (6 * ms + 3 * es)) * sf - tiny;
-                        if (G > 0 && G * G > (2 * A - Alo) * F) et = F / G;
-                        else et = Alo > 0 ? CYL__LSQRT(F / Alo) : (CYL__L)CYL__MAXR * 2;
+                        et = CYL__P(wbound)(y, CYL__P(ldot)(y, y), CYL__P(ldot)(y, s), at, A, R2,
+                                            ms, es, em);
                     } else {
-                        CYL__L g, aad;
-                        ead = 9 * u * ma * md + tiny;
-                        g = CYL__LMADD(t, ad, aw) - (CYL__L)x->sg * Hn;
-                        aad = CYL__P(labs)(ad) - ead;
-                        g = CYL__P(labs)(g) +
-                            (12 * u * ma * mw + at * (ead + 6 * u * ma * md) +
-                             6 * u * Hn + u * (CYL__P(labs)(aw) + at * CYL__P(labs)(ad))) * sf + tiny;
-                        et = aad > 0 ? g / aad : (CYL__L)CYL__MAXR * 2;
+                        et = CYL__P(cbound)(t, ad, aw, (CYL__L)x->sg * Hn, ma, md, mw);
                     }
-                    /* in the caller's units, plus the rounding to the API's type, rounded up */
-                    et = et * sf * tsc + tdev + CYL__P(labs)(tu - (CYL__L)tr);
-                    if (CYL__P(labs)(tu) < tiny) et += tiny * 2 * u;
-                    {
-                        /* in the API's type, rounded up: where it rounded down (the wider
-                           type's bound, or a subnormal one), one ulp more (fuzz findings 23,
-                           24) */
-                        CYL__R te = (CYL__R)et;
-                        if ((CYL__L)te < et)
-                            te += CYL__P(abs)(te) * (2 * CYL__U) + CYL__MINR * 2 * CYL__U;
-                        o->t_err = te;
-                    }
-                    if (CYL__P(abs)(tr) < CYL__MINR) o->t_err += CYL__MINR * 2 * CYL__U;
+                    /* in the caller's units */
+                    o->t_err = CYL__P(errup)(et * sf * tsc + tdev, tu, tr);
                 }
             }
             if (kept == 2) CYL__P(order2)(hits);
@@ -1838,7 +1883,253 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
     }
 }
 
+/* ------------------------------------------------------------------ the lean path */
+
+#if CYL__QUICK
+/* Cross product components for the lean path. The float API's inputs are floats: their
+   products are exact in double, so pq − rs rounds once with or without an FMA; the double
+   API uses Kahan's products (ldop). */
+#if CYL__WIDE
+#define CYL__QX(p, q, r, s) CYL__LMADD(p, q, -((r) * (s)))
+#else
+#define CYL__QX(p, q, r, s) CYL__P(ldop)(p, q, r, s)
+#endif
+
+/* The lean path's frame: what its hits need besides the crossing. */
+typedef struct CYL__P(qf) {
+    CYL__L a[3], d[3], w[3], s[3], m[3];
+    CYL__L aa, na, A, R2, ad, aw, H, Hn, r, sq;
+    CYL__L tsc, vsc; /* the frame's t and lengths times these are the caller's */
+    CYL__R lf[2];    /* the frame's length scale, as two factors */
+} CYL__P(qf);
+
+/* One hit of the lean path: crossing t (frame) on the wall (sg = 0) or a cap (sg = ∓1). */
+CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                          const CYL__P(qf) *f, CYL__L t, int sg, unsigned flags, unsigned opts,
+                          CYL__N(hit) *o)
+{
+    CYL__R Hu = cyl->h * CYL__C(0.5); /* h/2 in the caller's units, rounded toward zero */
+    CYL__L et = 0, nl[3] = {0, 0, 0}, face = 1, ma = 0, md = 0, ms = 0, es = 0, em = 0, mw = 0;
+    CYL__L tu = t * f->tsc, tdev = 0;
+    CYL__R tr;
+    int i;
+#if CYL__WIDE
+    (void)ray;
+#endif
+    if (Hu + Hu > cyl->h) Hu = (cyl->h - CYL__MINR * 2 * CYL__U) * CYL__C(0.5);
+    if (!(opts & CYL_NO_ERRBOUND)) {
+        mw = CYL__P(lmax3)(f->w);
+        CYL__P(ferr)(f->a, f->d, f->s, mw, &ma, &md, &ms, &es, &em);
+    }
+    if (!sg) {
+        CYL__L y[3], Y, G, v;
+        for (i = 0; i < 3; i++) y[i] = CYL__LMADD(t, f->s[i], f->m[i]);
+        Y = CYL__P(ldot)(y, y);
+        G = CYL__P(ldot)(y, f->s);
+#if !CYL__WIDE
+        if (!(flags & CYL_F_TANGENT)) {
+            /* the solver's exact-quadratic correction from double words (fref), kept in
+               [tmin, tmax] (in the caller's units: tmin/tsc can be subnormal in the frame,
+               fuzz finding 27) */
+            t = CYL__P(fref)(ray, cyl, f->a, f->d, f->r, f->lf, f->A, f->sq, t,
+                             (flags & CYL_F_INSIDE) != 0);
+            tu = t * f->tsc;
+            if (tu < (CYL__L)ray->tmin || tu > (CYL__L)ray->tmax) {
+                tu = tu < (CYL__L)ray->tmin ? (CYL__L)ray->tmin : (CYL__L)ray->tmax;
+                t = tu / f->tsc;
+                tdev = CYL__P(labs)(t * f->tsc - tu);
+            }
+            for (i = 0; i < 3; i++) y[i] = CYL__LMADD(t, f->s[i], f->m[i]);
+            Y = CYL__P(ldot)(y, y);
+            G = CYL__P(ldot)(y, f->s);
+        }
+#endif
+        o->part = CYL_SIDE;
+        if (!(opts & CYL_NO_NORMAL)) {
+            /* the outward normal y × a, |y × a| = |y||a| (y ⊥ a); it faces the ray where
+               (y × a)·d = y·s = G < 0 */
+            CYL__L sc = 1 / CYL__LSQRT(Y * f->aa);
+            nl[0] = CYL__LMADD(y[1], f->a[2], -(y[2] * f->a[1])) * sc;
+            nl[1] = CYL__LMADD(y[2], f->a[0], -(y[0] * f->a[2])) * sc;
+            nl[2] = CYL__LMADD(y[0], f->a[1], -(y[1] * f->a[0])) * sc;
+            face = G > 0 ? -1 : 1;
+        }
+        /* v within ±h/2 up to rounding: reported within; an infinite tube's saturates */
+        v = CYL__LMADD(t, f->ad, f->aw) / f->na * f->vsc;
+        v = v > (CYL__L)Hu ? (CYL__L)Hu : (v < -(CYL__L)Hu ? -(CYL__L)Hu : v);
+        if (CYL__P(labs)(v) > (CYL__L)CYL__MAXR) v = v > 0 ? (CYL__L)CYL__MAXR : -(CYL__L)CYL__MAXR;
+        o->v = (CYL__R)v;
+        if (!(opts & CYL_NO_ERRBOUND))
+            et = CYL__P(wbound)(y, Y, G, CYL__P(labs)(t), f->A, f->R2, ms, es, em);
+    } else {
+        CYL__L sgn = (CYL__L)sg;
+#if !CYL__WIDE
+        /* the plane crossing to about an ulp from double words (the plain quotient loses
+           several where H|a| and a·w nearly cancel), kept in [tmin, tmax] */
+        t = CYL__P(fcapt)(ray, cyl, f->a, f->d, f->H, f->lf, sg);
+        tu = t * f->tsc;
+        if (tu < (CYL__L)ray->tmin || tu > (CYL__L)ray->tmax) {
+            tu = tu < (CYL__L)ray->tmin ? (CYL__L)ray->tmin : (CYL__L)ray->tmax;
+            t = tu / f->tsc;
+            tdev = CYL__P(labs)(t * f->tsc - tu);
+        }
+#endif
+        o->part = sg > 0 ? CYL_CAP_HIGH : CYL_CAP_LOW;
+        if (!(opts & CYL_NO_NORMAL)) {
+            CYL__L k = sgn / f->na;
+            for (i = 0; i < 3; i++) nl[i] = k * f->a[i];
+            face = sgn * f->ad > 0 ? -1 : 1;
+        }
+        o->v = sg > 0 ? Hu : -Hu;
+        if (!(opts & CYL_NO_ERRBOUND))
+            et = CYL__P(cbound)(t, f->ad, f->aw, sgn * f->Hn, ma, md, mw);
+    }
+    tr = (CYL__R)tu;
+    o->t = tr;
+    o->flags = flags;
+    if (opts & CYL_OUTWARD) face = 1;
+    for (i = 0; i < 3; i++) o->n[i] = (CYL__R)(face * nl[i]);
+    o->t_err = (opts & CYL_NO_ERRBOUND)
+                   ? CYL__MAXR * 2
+                   : CYL__P(errup)(et * ((CYL__L)1 + (CYL__L)1 / 64) * f->tsc + tdev, tu, tr);
+}
+
+/* Options without CYL_PRECISE, where the fast path computes in double (the double API, and the
+   float API where double is hardware), start here: the fast path's formulas (and its exact
+   scaling) for the common case only, with as few operations, branches and live values as the
+   method allows. It answers origins within 2^30 radii and half heights, rays not parallel,
+   and tangent contacts except where caps clip them; anything else returns -1 (nothing
+   written) and the fast path answers. The double API's wall crossing is corrected by one
+   Newton step on the residual f(t) = |m + t·s|² − r²|a|², which removes the roundings of B, C,
+   √ and q (what remains is that of m and s), and a cap crossing is formed from double words;
+   t_err is note 8's residual bound at the returned t, so it holds whatever the step did. */
+CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                          int want, CYL__N(hit) *hits)
+{
+    const CYL__L far2 = (CYL__L)1152921504606846976.0; /* 2^60: |o − c| <= 2^30 r, 2^30 h/2 */
+    const CYL__L hi = CYL__LHI;
+    CYL__P(qf) f;
+    CYL__L r, h, dd, ww, MM, r2, band, P, D, B, C, sq, q, t0, t1, v0, v1, tmin, tmax;
+    int caps = (opts & CYL_CAPS) != 0, sg0, sg1, in0, in1, scaled = 0;
+    unsigned tf;
+
+    f.a[0] = (CYL__L)cyl->a[0];
+    f.a[1] = (CYL__L)cyl->a[1];
+    f.a[2] = (CYL__L)cyl->a[2];
+    f.d[0] = (CYL__L)ray->d[0];
+    f.d[1] = (CYL__L)ray->d[1];
+    f.d[2] = (CYL__L)ray->d[2];
+    f.w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0];
+    f.w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1];
+    f.w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2];
+    r = (CYL__L)cyl->r;
+    h = (CYL__L)cyl->h;
+    tmin = (CYL__L)ray->tmin;
+    tmax = (CYL__L)ray->tmax;
+    f.tsc = f.vsc = 1;
+    f.lf[0] = f.lf[1] = 1;
+    for (;;) {
+        f.s[0] = CYL__QX(f.a[1], f.d[2], f.a[2], f.d[1]);
+        f.s[1] = CYL__QX(f.a[2], f.d[0], f.a[0], f.d[2]);
+        f.s[2] = CYL__QX(f.a[0], f.d[1], f.a[1], f.d[0]);
+        f.m[0] = CYL__QX(f.a[1], f.w[2], f.a[2], f.w[1]);
+        f.m[1] = CYL__QX(f.a[2], f.w[0], f.a[0], f.w[2]);
+        f.m[2] = CYL__QX(f.a[0], f.w[1], f.a[1], f.w[0]);
+        f.aa = CYL__P(ldot)(f.a, f.a);
+        dd = CYL__P(ldot)(f.d, f.d);
+        f.A = CYL__P(ldot)(f.s, f.s);
+        MM = CYL__P(ldot)(f.m, f.m);
+        r2 = r * r;
+        f.R2 = r2 * f.aa;
+        /* the fast path's range check, which validates too */
+        if (f.aa >= 1 / CYL__LDIR && f.aa <= CYL__LDIR && dd >= 1 / CYL__LDIR &&
+            dd <= CYL__LDIR && MM + f.R2 <= hi && f.R2 >= 1 / hi && r > 0 && h > 0 &&
+            tmin <= tmax)
+            break;
+        if (scaled++ || CYL__P(validate)(ray, cyl) ||
+            CYL__P(fscale)(ray, cyl, f.a, f.d, f.w, &r, &h, f.lf, &f.tsc, &f.vsc))
+            return -1;
+    }
+    /* the fast path's hand-over of far origins and of an h/2 that rounds; cap planes within
+       range; rays not parallel */
+    ww = CYL__P(ldot)(f.w, f.w);
+    f.H = h * (CYL__L)0.5;
+    if (!(ww <= far2 * r2 && !(f.H + f.H < h || f.H + f.H > h) &&
+          (!(h <= (CYL__L)CYL__MAXR) || (ww <= far2 * (f.H * f.H) && f.H * f.H * f.aa <= hi * hi)) &&
+          f.A > (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * f.aa * dd))
+        return -1;
+    /* D = r²A − P² = A(r² − ρ²): beside the infinite tube below −band, a miss */
+    P = CYL__P(ldot)(f.w, f.s);
+    D = CYL__LMADD(r2, f.A, -(P * P));
+    band = (CYL__L)CYL__TANG * r2 * f.A;
+    if (D < -band) return 0;
+    tf = D <= band ? CYL_F_TANGENT : 0u;
+    if (tf && (opts & CYL_NO_TANGENT)) return 0;
+    if (tf && caps) return -1;
+    B = CYL__P(ldot)(f.m, f.s);
+    C = MM - f.R2;
+    f.sq = sq = CYL__LSQRT(f.aa * (D > 0 ? D : 0));
+    f.r = r;
+    q = -(B + (B < 0 ? -sq : sq));
+    if (!(CYL__P(labs)(q) >= CYL__LMIN)) return -1;
+    t0 = q / f.A;
+    t1 = C / q;
+    if (t0 > t1) {
+        CYL__L x = t0;
+        t0 = t1;
+        t1 = x;
+    }
+    /* the roots against the slab between the cap planes, v|a| = a·w + t·a·d against ±H|a|
+       (+inf for the infinite tube) */
+    f.aw = CYL__P(ldot)(f.a, f.w);
+    f.ad = CYL__P(ldot)(f.a, f.d);
+    f.na = CYL__LSQRT(f.aa);
+    f.Hn = f.H * f.na;
+    v0 = CYL__LMADD(t0, f.ad, f.aw);
+    v1 = CYL__LMADD(t1, f.ad, f.aw);
+    sg0 = (v0 > f.Hn) - (v0 < -f.Hn);
+    sg1 = (v1 > f.Hn) - (v1 < -f.Hn);
+    if (caps) {
+        /* the solid: a root beyond a cap plane gives way to that plane's crossing; both
+           beyond the same plane, the tube is met beside the solid */
+        if (sg0 * sg1 > 0) return 0;
+        if (sg0) t0 = ((CYL__L)sg0 * f.Hn - f.aw) / f.ad;
+        if (sg1) t1 = ((CYL__L)sg1 * f.Hn - f.aw) / f.ad;
+    }
+    /* in the caller's units (v0, v1 now); a t beyond the API type's range is a miss */
+    v0 = t0 * f.tsc;
+    v1 = t1 * f.tsc;
+    in0 = (caps || !sg0) && v0 >= tmin && v0 <= tmax && CYL__P(labs)(v0) <= (CYL__L)CYL__MAXR;
+    in1 = (caps || !sg1) && v1 >= tmin && v1 <= tmax && CYL__P(labs)(v1) <= (CYL__L)CYL__MAXR;
+    if (want == 0) return in0 || in1;
+    {
+        int n = 0;
+        if (in0) {
+            CYL__P(qhit)(ray, cyl, &f, t0, sg0, sg0 ? 0u : tf, opts, &hits[0]);
+            n = 1;
+        }
+        if (in1 && n < want) {
+            CYL__P(qhit)(ray, cyl, &f, t1, sg1, CYL_F_INSIDE | (sg1 ? 0u : tf), opts,
+                         &hits[n]);
+            n++;
+        }
+        if (n == 2) CYL__P(order2)(hits);
+        return n;
+    }
+}
+#undef CYL__QX
+#endif
+
 /* ------------------------------------------------------------------ public functions */
+
+/* The lean path serves every valid option set without CYL_PRECISE, where the fast path
+   computes in double. */
+#if CYL__QUICK
+CYL__INL int CYL__P(quickok)(unsigned opts)
+{
+    return !(opts & ~(unsigned)CYL__SUPPORTED) && !(opts & CYL_PRECISE);
+}
+#endif
 
 /* The solver's entry points stay out of line: the fast path answers nearly every call, and
    a small public function inlines into the caller's loop, where the options fold. */
@@ -1882,6 +2173,9 @@ CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
 {
     int rc;
     if (!ray || !cyl || !hit) return CYL_E_NULL;
+#if CYL__QUICK
+    if (CYL__P(quickok)(opts) && (rc = CYL__P(quick)(ray, cyl, opts, 1, hit)) >= 0) return rc;
+#endif
     if (CYL__P(fastok)(opts) && (rc = CYL__P(fast)(ray, cyl, opts, 1, hit)) >= 0) return rc;
     return CYL__P(slow_intersect)(ray, cyl, opts, hit);
 }
@@ -1891,6 +2185,9 @@ CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder)
 {
     int n;
     if (!ray || !cyl || !hits) return CYL_E_NULL;
+#if CYL__QUICK
+    if (CYL__P(quickok)(opts) && (n = CYL__P(quick)(ray, cyl, opts, 2, hits)) >= 0) return n;
+#endif
     if (CYL__P(fastok)(opts) && (n = CYL__P(fast)(ray, cyl, opts, 2, hits)) >= 0) return n;
     return CYL__P(slow_all)(ray, cyl, opts, hits);
 }
@@ -1900,6 +2197,10 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
     CYL__N(hit) unused; /* want = 0: the fast path writes no hit */
     int rc;
     if (!ray || !cyl) return CYL_E_NULL;
+#if CYL__QUICK
+    if (CYL__P(quickok)(opts) && (rc = CYL__P(quick)(ray, cyl, opts, 0, &unused)) >= 0)
+        return rc;
+#endif
     if (CYL__P(fastok)(opts) && (rc = CYL__P(fast)(ray, cyl, opts, 0, &unused)) >= 0)
         return rc;
     return CYL__P(slow_occluded)(ray, cyl, opts);
@@ -1962,6 +2263,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__LKAHAN
 #undef CYL__LHI
 #undef CYL__LDIR
+#undef CYL__QUICK
 #undef CYL__WIDE
 #undef CYL__LD
 
