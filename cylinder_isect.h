@@ -2006,7 +2006,10 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
 CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                           int want, CYL__N(hit) *hits)
 {
-    const CYL__L far2 = (CYL__L)1152921504606846976.0; /* 2^60: |o − c| <= 2^30 r, 2^30 h/2 */
+    /* |o − c| <= 2^30 r and 2^30 h/2, as the fast path; CYL_PRECISE (here only for the float
+       API computed in double with an FMA) keeps the fast path's headroom of 2^28 */
+    const CYL__L far2 = (opts & CYL_PRECISE) ? (CYL__L)72057594037927936.0 /* 2^56 */
+                                             : (CYL__L)1152921504606846976.0; /* 2^60 */
     const CYL__L hi = CYL__LHI;
     CYL__P(qf) f;
     CYL__L r, h, dd, ww, MM, r2, band, P, D, B, C, sq, q, t0, t1, v0, v1, tmin, tmax;
@@ -2051,66 +2054,88 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
             return -1;
     }
     /* the fast path's hand-over of far origins and of an h/2 that rounds; cap planes within
-       range; rays not parallel */
+       range */
     ww = CYL__P(ldot)(f.w, f.w);
     f.H = h * (CYL__L)0.5;
     if (!(ww <= far2 * r2 && !(f.H + f.H < h || f.H + f.H > h) &&
-          (!(h <= (CYL__L)CYL__MAXR) || (ww <= far2 * (f.H * f.H) && f.H * f.H * f.aa <= hi * hi)) &&
-          f.A > (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * f.aa * dd))
+          (!(h <= (CYL__L)CYL__MAXR) || (ww <= far2 * (f.H * f.H) && f.H * f.H * f.aa <= hi * hi))))
         return -1;
-    /* D = r²A − P² = A(r² − ρ²): beside the infinite tube below −band, a miss */
-    P = CYL__P(ldot)(f.w, f.s);
-    D = CYL__LMADD(r2, f.A, -(P * P));
-    band = (CYL__L)CYL__TANG * r2 * f.A;
-    if (D < -band) return 0;
-    tf = D <= band ? CYL_F_TANGENT : 0u;
-    if (tf && (opts & CYL_NO_TANGENT)) return 0;
-    if (tf && caps) return -1;
-    B = CYL__P(ldot)(f.m, f.s);
-    C = MM - f.R2;
-    f.sq = sq = CYL__LSQRT(f.aa * (D > 0 ? D : 0));
-    f.r = r;
-    q = -(B + (B < 0 ? -sq : sq));
-    if (!(CYL__P(labs)(q) >= CYL__LMIN)) return -1;
-    t0 = q / f.A;
-    t1 = C / q;
-    if (t0 > t1) {
-        CYL__L x = t0;
-        t0 = t1;
-        t1 = x;
-    }
-    /* the roots against the slab between the cap planes, v|a| = a·w + t·a·d against ±H|a|
-       (+inf for the infinite tube) */
     f.aw = CYL__P(ldot)(f.a, f.w);
     f.ad = CYL__P(ldot)(f.a, f.d);
     f.na = CYL__LSQRT(f.aa);
     f.Hn = f.H * f.na;
-    v0 = CYL__LMADD(t0, f.ad, f.aw);
-    v1 = CYL__LMADD(t1, f.ad, f.aw);
-    sg0 = (v0 > f.Hn) - (v0 < -f.Hn);
-    sg1 = (v1 > f.Hn) - (v1 < -f.Hn);
-    if (caps) {
-        /* the solid: a root beyond a cap plane gives way to that plane's crossing; both
-           beyond the same plane, the tube is met beside the solid */
-        if (sg0 * sg1 > 0) return 0;
-        if (sg0) t0 = ((CYL__L)sg0 * f.Hn - f.aw) / f.ad;
-        if (sg1) t1 = ((CYL__L)sg1 * f.Hn - f.aw) / f.ad;
+    f.r = r;
+    f.sq = 0;
+    if (!(f.A > (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * f.aa * dd)) {
+        /* parallel (sin² = A/(|a|²|d|²) within the tolerance): the wall is never hit; a cap
+           is, where the ray point lies on its disk */
+        if (!caps || !(h <= (CYL__L)CYL__MAXR)) return 0;
+        tf = CYL_F_PARALLEL;
+        sg0 = f.ad > 0 ? -1 : 1;
+        sg1 = -sg0;
+        t0 = ((CYL__L)sg0 * f.Hn - f.aw) / f.ad;
+        t1 = ((CYL__L)sg1 * f.Hn - f.aw) / f.ad;
+        in0 = CYL__P(fdisk)(f.m, f.s, f.R2, t0);
+        in1 = CYL__P(fdisk)(f.m, f.s, f.R2, t1);
+    } else {
+        /* D = r²A − P² = A(r² − ρ²): beside the infinite tube below −band, a miss */
+        P = CYL__P(ldot)(f.w, f.s);
+        D = CYL__LMADD(r2, f.A, -(P * P));
+        band = (CYL__L)CYL__TANG * r2 * f.A;
+        if (D < -band) return 0;
+        tf = D <= band ? CYL_F_TANGENT : 0u;
+        if (tf && (opts & CYL_NO_TANGENT)) return 0;
+        B = CYL__P(ldot)(f.m, f.s);
+        C = MM - f.R2;
+        f.sq = sq = CYL__LSQRT(f.aa * (D > 0 ? D : 0));
+        q = -(B + (B < 0 ? -sq : sq));
+        if (!(CYL__P(labs)(q) >= CYL__LMIN)) return -1;
+        t0 = q / f.A;
+        t1 = C / q;
+        if (t0 > t1) {
+            CYL__L x = t0;
+            t0 = t1;
+            t1 = x;
+        }
+        /* the roots against the slab between the cap planes, v|a| = a·w + t·a·d against
+           ±H|a| (+inf for the infinite tube) */
+        v0 = CYL__LMADD(t0, f.ad, f.aw);
+        v1 = CYL__LMADD(t1, f.ad, f.aw);
+        sg0 = (v0 > f.Hn) - (v0 < -f.Hn);
+        sg1 = (v1 > f.Hn) - (v1 < -f.Hn);
+        in0 = caps || !sg0;
+        in1 = caps || !sg1;
+        if (caps) {
+            /* the solid: a root beyond a cap plane gives way to that plane's crossing (which
+               must still lie on its disk for a grazing contact); both beyond the same plane,
+               the tube is met beside the solid */
+            if (sg0 * sg1 > 0) return 0;
+            if (sg0) {
+                t0 = ((CYL__L)sg0 * f.Hn - f.aw) / f.ad;
+                in0 = !tf || CYL__P(fdisk)(f.m, f.s, f.R2, t0);
+            }
+            if (sg1) {
+                t1 = ((CYL__L)sg1 * f.Hn - f.aw) / f.ad;
+                in1 = !tf || CYL__P(fdisk)(f.m, f.s, f.R2, t1);
+            }
+        }
     }
     /* in the caller's units (v0, v1 now); a t beyond the API type's range is a miss */
     v0 = t0 * f.tsc;
     v1 = t1 * f.tsc;
-    in0 = (caps || !sg0) && v0 >= tmin && v0 <= tmax && CYL__P(labs)(v0) <= (CYL__L)CYL__MAXR;
-    in1 = (caps || !sg1) && v1 >= tmin && v1 <= tmax && CYL__P(labs)(v1) <= (CYL__L)CYL__MAXR;
+    in0 = in0 && v0 >= tmin && v0 <= tmax && CYL__P(labs)(v0) <= (CYL__L)CYL__MAXR;
+    in1 = in1 && v1 >= tmin && v1 <= tmax && CYL__P(labs)(v1) <= (CYL__L)CYL__MAXR;
     if (want == 0) return in0 || in1;
     {
         int n = 0;
         if (in0) {
-            CYL__P(qhit)(ray, cyl, &f, t0, sg0, sg0 ? 0u : tf, opts, &hits[0]);
+            CYL__P(qhit)(ray, cyl, &f, t0, sg0, tf & (sg0 ? CYL_F_PARALLEL : ~0u), opts,
+                         &hits[0]);
             n = 1;
         }
         if (in1 && n < want) {
-            CYL__P(qhit)(ray, cyl, &f, t1, sg1, CYL_F_INSIDE | (sg1 ? 0u : tf), opts,
-                         &hits[n]);
+            CYL__P(qhit)(ray, cyl, &f, t1, sg1,
+                         CYL_F_INSIDE | (tf & (sg1 ? CYL_F_PARALLEL : ~0u)), opts, &hits[n]);
             n++;
         }
         if (n == 2) CYL__P(order2)(hits);
@@ -2122,12 +2147,13 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
 
 /* ------------------------------------------------------------------ public functions */
 
-/* The lean path serves every valid option set without CYL_PRECISE, where the fast path
-   computes in double. */
+/* The lean path serves every valid option set where the fast path computes in double;
+   CYL_PRECISE only where the fast path serves it in double (the float API with an FMA). */
 #if CYL__QUICK
 CYL__INL int CYL__P(quickok)(unsigned opts)
 {
-    return !(opts & ~(unsigned)CYL__SUPPORTED) && !(opts & CYL_PRECISE);
+    return !(opts & ~(unsigned)CYL__SUPPORTED) &&
+           (!(opts & CYL_PRECISE) || (CYL__WIDE && CYL__LKAHAN));
 }
 #endif
 
