@@ -95,17 +95,21 @@
    =============================
    Every call without CYL_PRECISE runs a fast path first: the plain formulas of NUMERICAL
    NOTES 3-5 once, in double for the float API where double is hardware (CYL_FLOAT_WIDE),
-   else in the API's own type, with s = a × d from Kahan's FMA products where the FMA is
-   hardware. For the double API (and the float API computed in float) the crossing it returns
-   is then corrected from double words: a wall root by the exact-quadratic step of note 4, a
-   cap crossing as in note 5; so t is about an ulp in both APIs. Its decisions (tangency, rim,
-   tmin/tmax) carry the plain roundings: within a few ulps of a threshold they can go either
-   way, and farther for origins far from the axis (the rounding of o − c is about u·|o − c|/r
-   of e). t_err is rigorous on every path (note 8). Inputs outside the range where nothing
-   overflows or underflows are first scaled by powers of two. The compensated solver of notes
-   1-7 answers alone for invalid input, degenerate cases, an h/2 that rounds, and origins
-   farther than 2^30 radii or half heights (2^12 when the fast path computes in float), where
-   the rounding of o − c alone would be 2^-23 (2^-12) of e or of the rim margin.
+   else in the API's own type. Where it computes in double (the double API; the float API on
+   x86-64, AArch64 and the like) it is the lean path: one range check that also validates,
+   cross products from plain FMA products for float inputs (exact in double) and from Kahan's
+   for double ones, no live value it does not need, a normal from (a × x) × a, and the
+   residual bound of note 8, also in double. For the double API (and the float API computed in
+   float) the crossing is then corrected from double words: a wall root by the exact-quadratic
+   step of note 4, a cap crossing as in note 5; so t is about an ulp in both APIs. Its
+   decisions (tangency, rim, tmin/tmax) carry the plain roundings: within a few ulps of a
+   threshold they can go either way, and farther for origins far from the axis (the rounding
+   of o − c is about u·|o − c|/r of e). t_err is rigorous on every path (note 8). Inputs
+   outside the range where nothing overflows or underflows are first scaled by powers of two.
+   The compensated solver of notes 1-7 answers alone for invalid input, degenerate cases, an
+   h/2 that rounds, and origins farther than 2^30 radii or half heights (2^12 when the fast
+   path computes in float), where the rounding of o − c alone would be 2^-23 (2^-12) of e or
+   of the rim margin.
    CYL_PRECISE starts on the fast path too, but certifies every decision: each is taken only
    where the computed value is farther from its threshold than an a-priori bound on its error
    (the parallel test, D against the tangent band, each root against the rims, each crossing
@@ -113,8 +117,8 @@
    every tangent or parallel contact, and origins on the surface within the roundings go to
    the compensated solver, with every wall coefficient compensated and the rim decided from
    the corrected roots (note 7). For the float API computed in double with a hardware FMA the
-   bound is global: |o − c| below 2^28 r and 2^28 h/2 keeps double's roundings under 2^-20 of
-   every margin, inside float's band of 2^-16.
+   bound is global (and the lean path serves it): |o − c| below 2^28 r and 2^28 h/2 keeps
+   double's roundings under 2^-20 of every margin, inside float's band of 2^-16.
 
    CONFIGURATION (define before including)
    =============
@@ -730,12 +734,16 @@ CYL__INL int CYL__P(check)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
 }
 
 /* The fast path serves every valid option set; CYL_PRECISE only where it computes in the
-   wider type with a hardware FMA (it then checks its own headroom, see fast). */
+   wider type with a hardware FMA (it then checks its own headroom, see fast). Where the lean
+   path runs first (see quick), what it hands over the fast path would hand over too, except
+   for CYL_PRECISE in the double API, which the fast path certifies decision by decision. */
 CYL__INL int CYL__P(fastok)(unsigned opts)
 {
-#ifdef CYL_NO_FAST_PATH
+#if defined(CYL_NO_FAST_PATH) || (CYL__QUICK && (CYL__WIDE || defined(CYL_NO_PRECISE)))
     (void)opts;
     return 0;
+#elif CYL__QUICK
+    return !(opts & ~(unsigned)CYL__SUPPORTED) && (opts & CYL_PRECISE);
 #else
     return !(opts & ~(unsigned)CYL__SUPPORTED) &&
            (!(opts & CYL_PRECISE) || !CYL__WIDE || CYL__LKAHAN);
@@ -1629,6 +1637,11 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
         if (!(mw <= far * r) || (hfin && !(mw <= far * H))) return -1;
         if (hfin && (H + H < hh || H + H > hh)) return -1;
     }
+    if (ce && CYL__P(labs)(MM - R2) <= 64 * u * (MM + R2) &&
+        (!(ray->tmin < 0 || ray->tmin > 0) || !(ray->tmax < 0 || ray->tmax > 0)))
+        /* CYL_PRECISE: an origin on the surface within the roundings and t = 0 an end of
+           the range (a secondary ray) would be handed over at the end: at once instead */
+        return -1;
     if ((opts & CYL_PRECISE) && CYL__WIDE) {
         /* The precise tier in the wider type: its roundings (u of CYL__L, about 2^-53) enter
            e = 1 − ρ²/r², the rim and t amplified by at most |o − c|/r and |o − c|/(h/2)
@@ -2057,7 +2070,7 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
        range */
     ww = CYL__P(ldot)(f.w, f.w);
     f.H = h * (CYL__L)0.5;
-    if (!(ww <= far2 * r2 && !(f.H + f.H < h || f.H + f.H > h) &&
+    if (!(ww <= far2 * r2 && (CYL__WIDE || !(f.H + f.H < h || f.H + f.H > h)) &&
           (!(h <= (CYL__L)CYL__MAXR) || (ww <= far2 * (f.H * f.H) && f.H * f.H * f.aa <= hi * hi))))
         return -1;
     f.aw = CYL__P(ldot)(f.a, f.w);
@@ -2124,7 +2137,9 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     v0 = t0 * f.tsc;
     v1 = t1 * f.tsc;
     in0 = in0 && v0 >= tmin && v0 <= tmax && CYL__P(labs)(v0) <= (CYL__L)CYL__MAXR;
-    in1 = in1 && v1 >= tmin && v1 <= tmax && CYL__P(labs)(v1) <= (CYL__L)CYL__MAXR;
+    /* the second only where it is wanted */
+    in1 = in1 && !(in0 && want < 2) && v1 >= tmin && v1 <= tmax &&
+          CYL__P(labs)(v1) <= (CYL__L)CYL__MAXR;
     if (want == 0) return in0 || in1;
     {
         int n = 0;
@@ -2133,7 +2148,7 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
                          &hits[0]);
             n = 1;
         }
-        if (in1 && n < want) {
+        if (in1) {
             CYL__P(qhit)(ray, cyl, &f, t1, sg1,
                          CYL_F_INSIDE | (tf & (sg1 ? CYL_F_PARALLEL : ~0u)), opts, &hits[n]);
             n++;
