@@ -1346,9 +1346,11 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, un
 
 /* ------------------------------------------------------------------ the fast path */
 
-/* Options without CYL_PRECISE run this first: the plain formulas of the solver above (the
-   geometric discriminant, the stable root pair, the cap planes), once, in type CYL__L (double
-   for the float API where double is hardware, see CYL_FLOAT_WIDE; else the API's own type).
+/* The float API computed in float runs this first, and CYL_PRECISE in the double API (where
+   the lean path below, its common case, runs first otherwise): the plain formulas of the
+   solver above (the geometric discriminant, the stable root pair, the cap planes), once, in
+   type CYL__L (double for the float API where double is hardware, see CYL_FLOAT_WIDE; else
+   the API's own type).
    What it does not do is compensate: o − c, a·w and the coefficients carry their roundings,
    so a decision within a few ulps of its threshold (tangency, rim, tmin/tmax) can go either
    way, and t is good to a few ulps where the case is well-conditioned. t_err stays rigorous:
@@ -2001,7 +2003,10 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     o->t = tr;
     o->flags = flags;
     if (opts & CYL_OUTWARD) face = 1;
-    for (i = 0; i < 3; i++) o->n[i] = (CYL__R)(face * nl[i]);
+    for (i = 0; i < 3; i++) {
+        CYL__L nk = face * nl[i];
+        o->n[i] = (CYL__R)nk;
+    }
     o->t_err = (opts & CYL_NO_ERRBOUND)
                    ? CYL__MAXR * 2
                    : CYL__P(errup)(et * ((CYL__L)1 + (CYL__L)1 / 64) * f->tsc + tdev, tu, tr);
