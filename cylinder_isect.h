@@ -14,7 +14,7 @@
        cyld_hit hit;
        int rc = cyld_intersect(&ray, &cyl, CYL_CAPS, &hit);   // nearest hit of the capped solid
        if (rc == CYL_HIT)
-           printf("t = %.17g +- %.2g\n", hit.t, hit.t_err);  // t = 4.1339745962155616 +- 2.1e-14
+           printf("t = %.17g +- %.2g\n", hit.t, hit.t_err);  // t = 4.1339745962155616 +- 1.2e-14
        else if (rc < 0)
            printf("error: %s\n", cyl_strerror(rc));
 
@@ -193,10 +193,11 @@
    exact t in all 400,458 float and 413,701 double hits; default path: no misclassification
    beyond the band in any family for float (in double) and in the benign ones for double,
    t within 0.5 ulps on the well-conditioned hits of the benign families in both; CYL_PRECISE:
-   none beyond the band in any family, 0.5 ulps. Time per call there: float 136 ns (precise
-   137), double 205 ns (precise 274), against 74 / 59 ns for the end-point formulation and
-   85 / 94 ns for the literal one (a shared machine: compare within one run); those two
-   misclassify 18,787 / 14,463 and 17,748 / 9,238 cases beyond the band.
+   none beyond the band in any family, 0.5 ulps. Time per call there: float 118 ns (precise
+   117), double 200 ns (precise 308), against 84 / 64 ns for the end-point formulation and
+   98 / 106 ns for the literal one (a shared machine: compare within one run); those two
+   misclassify 18,787 / 14,463 and 17,748 / 9,238 cases beyond the band. The rigorous t_err
+   costs its share: without it and the normal the float path takes 94 ns.
    Extreme ratios: when r is below 2^-31 (float) or 2^-435 (double) of |o − c|, r² underflows
    in the frame: the wall test then compares distances linearly, may misjudge rays within the
    rounding of o − c of the axis, and reports t_err = +inf; when h/2 exceeds |o − c| and r by
@@ -1500,17 +1501,15 @@ CYL__INL CYL__L CYL__P(wbound)(const CYL__L y[3], CYL__L Y, CYL__L Gs, CYL__L at
 }
 
 /* A cap crossing's bound, in the frame: the plane's residual a·x(t) − sHn (sHn = ±H|a|) over
-   a·d, with the roundings of a·w (and of o − c), a·d and H|a| (ma, md, mw: the largest
-   components of a, d and w). */
-CYL__INL CYL__L CYL__P(cbound)(CYL__L t, CYL__L ad, CYL__L aw, CYL__L sHn, CYL__L ma, CYL__L md,
-                              CYL__L mw)
+   a·d, with the roundings of a·w (and of o − c), a·d and H|a|; Sw >= Σ|a_i w_i| and
+   Sd >= Σ|a_i d_i| (three times the product of the largest components, or |a||w| and |a||d|). */
+CYL__INL CYL__L CYL__P(cbound)(CYL__L t, CYL__L ad, CYL__L aw, CYL__L sHn, CYL__L Sw, CYL__L Sd)
 {
     const CYL__L u = CYL__LU, sf = (CYL__L)1 + (CYL__L)1 / 64, tiny = CYL__LMIN;
-    CYL__L at = CYL__P(labs)(t), ead = 9 * u * ma * md + tiny, g, aad;
+    CYL__L at = CYL__P(labs)(t), ead = 3 * u * Sd + tiny, g, aad;
     g = CYL__LMADD(t, ad, aw) - sHn;
     aad = CYL__P(labs)(ad) - ead;
-    g = CYL__P(labs)(g) + (12 * u * ma * mw + at * (ead + 6 * u * ma * md) +
-                           6 * u * CYL__P(labs)(sHn) +
+    g = CYL__P(labs)(g) + (4 * u * Sw + at * (ead + 2 * u * Sd) + 6 * u * CYL__P(labs)(sHn) +
                            u * (CYL__P(labs)(aw) + at * CYL__P(labs)(ad))) * sf + tiny;
     return aad > 0 ? g / aad : (CYL__L)CYL__MAXR * 2;
 }
@@ -1886,7 +1885,8 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                         et = CYL__P(wbound)(y, CYL__P(ldot)(y, y), CYL__P(ldot)(y, s), at, A, R2,
                                             ms, es, em);
                     } else {
-                        et = CYL__P(cbound)(t, ad, aw, (CYL__L)x->sg * Hn, ma, md, mw);
+                        et = CYL__P(cbound)(t, ad, aw, (CYL__L)x->sg * Hn, 3 * ma * mw,
+                                            3 * ma * md);
                     }
                     /* in the caller's units */
                     o->t_err = CYL__P(errup)(et * sf * tsc + tdev, tu, tr);
@@ -1910,10 +1910,31 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
 #define CYL__QX(p, q, r, s) CYL__P(ldop)(p, q, r, s)
 #endif
 
+/* The lean path's wall bound: note 8's residual bound with norm-wise error terms, from what
+   the lean path has at hand (no componentwise maxima): em >= |δm| (with the rounding of
+   o − c), es >= |δs|, sA = √A; Y = ŷ·ŷ and Gs = ŷ·ŝ at t, at = |t|. E bounds |ŷ − y| (the
+   roundings of m, s and of ŷ = m + t·s), hence F >= |f(t)| (with the roundings of Y, r²|a|²
+   and Y − r²|a|²) and G <= |f'(t)|/2 (with the rounding of ŷ·ŝ); the nearest root of the
+   exact quadratic is within F/G where G² > A·F, else within √(F/A). */
+CYL__INL CYL__L CYL__P(qbound)(CYL__L Y, CYL__L Gs, CYL__L at, CYL__L A, CYL__L R2, CYL__L sA,
+                              CYL__L es, CYL__L em)
+{
+    const CYL__L u = CYL__LU, sf = (CYL__L)1 + (CYL__L)1 / 64, tiny = CYL__LMIN;
+    CYL__L sY = CYL__LSQRT(Y), E, F, G, Alo;
+    E = em + at * (es + u * sA) + u * sY;
+    F = Y - R2;
+    F = CYL__P(labs)(F) +
+        (3 * u * Y + E * (2 * sY + E) + 6 * u * R2 + u * CYL__P(labs)(F)) * sf + tiny;
+    G = CYL__P(labs)(Gs) - (E * (sA + es) + sY * (es + 3 * u * sA)) * sf - tiny;
+    Alo = A - (3 * u * A + es * (2 * sA + es)) * sf - tiny;
+    if (G > 0 && G * G > (2 * A - Alo) * F) return F / G;
+    return Alo > 0 ? CYL__LSQRT(F / Alo) : (CYL__L)CYL__MAXR * 2;
+}
+
 /* The lean path's frame: what its hits need besides the crossing. */
 typedef struct CYL__P(qf) {
     CYL__L a[3], d[3], w[3], s[3], m[3];
-    CYL__L aa, na, A, R2, ad, aw, H, Hn, r, sq;
+    CYL__L aa, na, A, R2, ad, aw, H, Hn, r, sq, ww, dd;
     CYL__L tsc, vsc; /* the frame's t and lengths times these are the caller's */
     CYL__R lf[2];    /* the frame's length scale, as two factors */
 } CYL__P(qf);
@@ -1924,7 +1945,8 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                           CYL__N(hit) *o)
 {
     CYL__R Hu = cyl->h * CYL__C(0.5); /* h/2 in the caller's units, rounded toward zero */
-    CYL__L et = 0, nl[3] = {0, 0, 0}, face = 1, ma = 0, md = 0, ms = 0, es = 0, em = 0, mw = 0;
+    const CYL__L u = CYL__LU;
+    CYL__L et = 0, nl[3] = {0, 0, 0}, face = 1, sA = 0, es = 0, em = 0, Sw = 0, Sd = 0;
     CYL__L tu = t * f->tsc, tdev = 0;
     CYL__R tr;
     int i;
@@ -1933,8 +1955,14 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
 #endif
     if (Hu + Hu > cyl->h) Hu = (cyl->h - CYL__MINR * 2 * CYL__U) * CYL__C(0.5);
     if (!(opts & CYL_NO_ERRBOUND)) {
-        mw = CYL__P(lmax3)(f->w);
-        CYL__P(ferr)(f->a, f->d, f->s, mw, &ma, &md, &ms, &es, &em);
+        /* norm-wise error bounds: Sw = |a||w| >= Σ|a_i w_i|, Sd = |a||d|; |δm| <= 4u·|a||w|
+           (o − c, the products and the subtraction, with or without an FMA); |δs| <= u|s| for
+           float inputs (exact products, one rounding), 2u|s| for Kahan's, else 3u·|a||d| */
+        Sw = f->na * CYL__LSQRT(f->ww);
+        Sd = f->na * CYL__LSQRT(f->dd);
+        sA = CYL__LSQRT(f->A);
+        em = 4 * u * Sw;
+        es = CYL__WIDE ? u * sA : (CYL__LKAHAN ? 2 * u * sA : 3 * u * Sd);
     }
     if (!sg) {
         CYL__L y[3], Y, G, v;
@@ -1975,7 +2003,7 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         if (CYL__P(labs)(v) > (CYL__L)CYL__MAXR) v = v > 0 ? (CYL__L)CYL__MAXR : -(CYL__L)CYL__MAXR;
         o->v = (CYL__R)v;
         if (!(opts & CYL_NO_ERRBOUND))
-            et = CYL__P(wbound)(y, Y, G, CYL__P(labs)(t), f->A, f->R2, ms, es, em);
+            et = CYL__P(qbound)(Y, G, CYL__P(labs)(t), f->A, f->R2, sA, es, em);
     } else {
         CYL__L sgn = (CYL__L)sg;
 #if !CYL__WIDE
@@ -1997,7 +2025,7 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         }
         o->v = sg > 0 ? Hu : -Hu;
         if (!(opts & CYL_NO_ERRBOUND))
-            et = CYL__P(cbound)(t, f->ad, f->aw, sgn * f->Hn, ma, md, mw);
+            et = CYL__P(cbound)(t, f->ad, f->aw, sgn * f->Hn, Sw, Sd);
     }
     tr = (CYL__R)tu;
     o->t = tr;
@@ -2073,7 +2101,8 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     }
     /* the fast path's hand-over of far origins and of an h/2 that rounds; cap planes within
        range */
-    ww = CYL__P(ldot)(f.w, f.w);
+    f.ww = ww = CYL__P(ldot)(f.w, f.w);
+    f.dd = dd;
     f.H = h * (CYL__L)0.5;
     if (!(ww <= far2 * r2 && (CYL__WIDE || !(f.H + f.H < h || f.H + f.H > h)) &&
           (!(h <= (CYL__L)CYL__MAXR) || (ww <= far2 * (f.H * f.H) && f.H * f.H * f.aa <= hi * hi))))
