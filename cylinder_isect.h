@@ -186,7 +186,9 @@
         the bounds hold with or without contraction); the nearest root of the exact quadratic
         is within F/G where G² > A·F (f' keeps its sign there: the same crossing), else
         √(F/A). A cap: the plane's residual a·x(t) ∓ H|a| over a·d. For the float API computed
-        in double, the rounding of t to float is added and the sum rounded up.
+        in double, the rounding of t to float is added and the sum rounded up. The lean path
+        uses the same argument with norm-wise terms from what it has at hand: |δm| <= 4u|a||w|,
+        |δs| <= u|s| for float inputs (exact products), 2u|s| with Kahan's, else 3u|a||d|.
    Measured against the exact MPFR reference of ref/ on ten case families, 6000 cases each
    with and without caps (`make report`, seed 20261122, x86-64 with FMA; bench/REPORT.md has
    every family; `make test` asserts the targets on a fixed-seed sample): t_err contained the
