@@ -24,7 +24,7 @@ static void test_readme_snippet_prints_the_hit(void)
 {
     out[0] = 0;
     readme_snippet();
-    TEST_ASSERT_EQUAL_STRING("t = 4.1339745962155616 +- 1.2e-14, n = (-0.866025, 0.5, 0)\n", out);
+    TEST_ASSERT_EQUAL_STRING("t = 4.1339745962155616 +- 1.6e-14, n = (-0.866025, 0.5, 0)\n", out);
 }
 
 int main(void)
