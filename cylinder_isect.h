@@ -1543,11 +1543,13 @@ CYL__INL CYL__R CYL__P(errup)(CYL__L et, CYL__L tu, CYL__R tr)
     return te;
 }
 
-/* Two crossings whose corrections crossed over are kept ordered, the bound widened to match. */
+/* Two crossings whose corrections crossed over are kept ordered, the bound widened to match,
+   rounded up: the difference and the sum round once each (fuzz finding 30). */
 CYL__INL void CYL__P(order2)(CYL__N(hit) hits[2])
 {
     if (hits[1].t < hits[0].t) {
-        hits[1].t_err += hits[0].t - hits[1].t;
+        CYL__R e = hits[1].t_err + (hits[0].t - hits[1].t);
+        hits[1].t_err = e + e * (4 * CYL__U) + CYL__MINR * 2 * CYL__U;
         hits[1].t = hits[0].t;
     }
 }

@@ -312,6 +312,38 @@ static void test_double_huge_radius_tiny_axis_overflow(void)
   replay_finding("double-huge-radius-tiny-axis-overflow", FIXED);
 }
 
+/* Finding 30 (fixed by the commit that added it; grid corpus:
+ * fuzz/corpus_grid/finding-float-order2-widening-rounded-down). Float, from_segment, caps: a
+ * ray nearly parallel to the cap plane, its origin within double's rounding of that plane, so
+ * the plain cap crossing came out after the wall exit; intersect_all kept the two ordered by
+ * moving the exit onto the entry and widening its t_err by the difference, and that sum,
+ * rounded to nearest in float, could land below the exact one. The input replays only where the
+ * lean path serves it (an FMA build): this test checks the widening itself, in both APIs, with a
+ * sum that rounds down (t_err1 a quarter ulp of the difference). */
+static void test_order2_widening_rounds_up(void)
+{
+  cylf_hit hf[2];
+  cyld_hit hd[2];
+  double exact;
+  memset(hf, 0, sizeof hf);
+  memset(hd, 0, sizeof hd);
+  hf[0].t = 0x1.861862p-3f;
+  hf[1].t = 0x1.dcp-4f;
+  hf[1].t_err = 0x1p-29f; /* a quarter ulp of the difference (about 0.074) */
+  exact = (double)hf[1].t_err + ((double)hf[0].t - (double)hf[1].t);
+  cyl__f_order2(hf);
+  TEST_ASSERT_TRUE_MESSAGE(!(hf[1].t < hf[0].t) && !(hf[1].t > hf[0].t), "float: the exit moves onto the entry");
+  TEST_ASSERT_TRUE_MESSAGE((double)hf[1].t_err >= exact, "float: widened t_err below t_err + difference");
+  hd[0].t = 0x1.8618618618619p-3;
+  hd[1].t = 0x1.dcp-4;
+  hd[1].t_err = 0x1p-58; /* a quarter ulp of the difference */
+  cyl__d_order2(hd);
+  TEST_ASSERT_TRUE_MESSAGE(!(hd[1].t < hd[0].t) && !(hd[1].t > hd[0].t), "double: the exit moves onto the entry");
+  TEST_ASSERT_TRUE_MESSAGE((long double)hd[1].t_err >=
+                               (long double)0x1p-58 + ((long double)hd[0].t - (long double)0x1.dcp-4),
+                           "double: widened t_err below t_err + difference");
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -346,5 +378,6 @@ int main(void)
   RUN_TEST(test_float_wide_t_err_rounded_down);
   RUN_TEST(test_double_subnormal_height_cap_bound);
   RUN_TEST(test_double_huge_radius_tiny_axis_overflow);
+  RUN_TEST(test_order2_widening_rounds_up);
   return UNITY_END();
 }
