@@ -196,11 +196,11 @@
    exact t in all 400,458 float and 413,701 double hits; default path: no misclassification
    beyond the band in any family for float (in double) and in the benign ones for double,
    t within 0.5 ulps on the well-conditioned hits of the benign families in both; CYL_PRECISE:
-   none beyond the band in any family, 0.5 ulps. Time per call there: float 118 ns (precise
-   117), double 200 ns (precise 308), against 84 / 64 ns for the end-point formulation and
-   98 / 106 ns for the literal one (a shared machine: compare within one run); those two
-   misclassify 18,787 / 14,463 and 17,748 / 9,238 cases beyond the band. The rigorous t_err
-   costs its share: without it and the normal the float path takes 94 ns.
+   none beyond the band in any family, 0.5 ulps. Time per call there: float 86 ns (precise
+   87), double 171 ns (precise 281), against 75 / 59 ns for the end-point formulation and
+   84 / 96 ns for the literal one (a shared machine: compare within one run); those two
+   misclassify 18,787 / 14,463 and 17,748 / 9,238 cases beyond the band. Without t_err and
+   the normal the float path takes 70 ns.
    Extreme ratios: when r is below 2^-31 (float) or 2^-435 (double) of |o − c|, r² underflows
    in the frame: the wall test then compares distances linearly, may misjudge rays within the
    rounding of o − c of the axis, and reports t_err = +inf; when h/2 exceeds |o − c| and r by
