@@ -737,10 +737,10 @@ CYL__INL int CYL__P(check)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     return rc;
 }
 
-/* The fast path serves every valid option set; CYL_PRECISE only where it computes in the
-   wider type with a hardware FMA (it then checks its own headroom, see fast). Where the lean
-   path runs first (see quick), what it hands over the fast path would hand over too, except
-   for CYL_PRECISE in the double API, which the fast path certifies decision by decision. */
+/* Where the lean path runs (see quick), what it hands over the fast path would hand over too,
+   except for CYL_PRECISE in the double API, which the fast path certifies decision by
+   decision; so the fast path serves that, and every valid option set of the float API
+   computed in float. */
 CYL__INL int CYL__P(fastok)(unsigned opts)
 {
 #if defined(CYL_NO_FAST_PATH) || (CYL__QUICK && (CYL__WIDE || defined(CYL_NO_PRECISE)))
@@ -749,8 +749,7 @@ CYL__INL int CYL__P(fastok)(unsigned opts)
 #elif CYL__QUICK
     return !(opts & ~(unsigned)CYL__SUPPORTED) && (opts & CYL_PRECISE);
 #else
-    return !(opts & ~(unsigned)CYL__SUPPORTED) &&
-           (!(opts & CYL_PRECISE) || !CYL__WIDE || CYL__LKAHAN);
+    return !(opts & ~(unsigned)CYL__SUPPORTED);
 #endif
 }
 
@@ -1466,6 +1465,18 @@ CYL__INL CYL__R CYL__P(fref)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
     CYL__P(refine)(s, sl, m, ml, A, R2, R2l, sq, t, upper, &hi, &lo);
     return hi;
 }
+
+/* A corrected crossing t (frame) kept in [tmin, tmax], in the caller's units (tmin/tsc can be
+   subnormal in the frame, fuzz finding 27): sets t and tu = t·tsc, returns what the frame's t
+   differs from tu (|t·tsc − tu|, added to the bound). */
+CYL__INL CYL__R CYL__P(fclamp)(const CYL__N(ray) *ray, CYL__R tsc, CYL__R *t, CYL__R *tu)
+{
+    *tu = *t * tsc;
+    if (!(*tu < ray->tmin || *tu > ray->tmax)) return 0;
+    *tu = *tu < ray->tmin ? ray->tmin : ray->tmax;
+    *t = *tu / tsc;
+    return CYL__P(abs)(*t * tsc - *tu);
+}
 #endif
 
 /* Componentwise bounds on the errors of s = a × d (es) and m = a × w (em, with the rounding
@@ -1601,7 +1612,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
     CYL__R lf[2] = {1, 1}; /* the frame's length scale, as two factors */
     CYL__P(fx) c[2];
     int i, k, caps = (opts & CYL_CAPS) != 0, hfin = cyl->h <= CYL__MAXR, tangent = 0;
-    int parallel, scaled = 0, ce = (opts & CYL_PRECISE) && !CYL__WIDE;
+    int parallel, scaled = 0, ce = (opts & CYL_PRECISE) != 0;
 
     for (i = 0; i < 3; i++) {
         a[i] = (CYL__L)cyl->a[i];
@@ -1652,14 +1663,6 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
         /* CYL_PRECISE: an origin on the surface within the roundings and t = 0 an end of
            the range (a secondary ray) would be handed over at the end: at once instead */
         return -1;
-    if ((opts & CYL_PRECISE) && CYL__WIDE) {
-        /* The precise tier in the wider type: its roundings (u of CYL__L, about 2^-53) enter
-           e = 1 − ρ²/r², the rim and t amplified by at most |o − c|/r and |o − c|/(h/2)
-           (s is accurate to 2u relative with the FMA): below 2^28 that is under 2^-20, inside
-           the API type's band of 2^-16. Beyond, the compensated solver answers. */
-        if (!(mw <= r * (CYL__L)268435456.0) || (hfin && !(mw <= H * (CYL__L)268435456.0)))
-            return -1;
-    }
     A = CYL__P(ldot)(s, s);
     aw = CYL__P(ldot)(a, w);
     ad = CYL__P(ldot)(a, d);
@@ -1814,19 +1817,11 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                 tu = t * tsc;
 #if !CYL__WIDE
                 if (x->sg || !tangent) {
-                    /* the crossing to an ulp, kept in the accepted range (in the caller's
-                       units: tmin/tsc can be subnormal in the frame, fuzz finding 27) */
+                    /* the crossing to an ulp, kept in the accepted range */
                     t = x->sg ? CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg)
                               : CYL__P(fref)(ray, cyl, a, d, r, lf, A, sq, t, sel[i]);
-                    tu = t * tsc;
-                    if (tu < tmin || tu > tmax) {
-                        tu = tu < tmin ? tmin : tmax;
-                        t = tu / tsc;
-                        tdev = CYL__P(labs)(t * tsc - tu);
-                    }
+                    tdev = CYL__P(fclamp)(ray, tsc, &t, &tu);
                 }
-#else
-                (void)lf;
 #endif
                 tr = (CYL__R)tu;
                 o->t = tr;
@@ -1977,27 +1972,17 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     }
     if (!sg) {
         CYL__L y[3], Y, G, v;
+#if !CYL__WIDE
+        if (!(flags & CYL_F_TANGENT)) {
+            /* the solver's exact-quadratic correction from double words, kept in range */
+            t = CYL__P(fref)(ray, cyl, f->a, f->d, f->r, f->lf, f->A, f->sq, t,
+                             (flags & CYL_F_INSIDE) != 0);
+            tdev = CYL__P(fclamp)(ray, f->tsc, &t, &tu);
+        }
+#endif
         for (i = 0; i < 3; i++) y[i] = CYL__LMADD(t, f->s[i], f->m[i]);
         Y = CYL__P(ldot)(y, y);
         G = CYL__P(ldot)(y, f->s);
-#if !CYL__WIDE
-        if (!(flags & CYL_F_TANGENT)) {
-            /* the solver's exact-quadratic correction from double words (fref), kept in
-               [tmin, tmax] (in the caller's units: tmin/tsc can be subnormal in the frame,
-               fuzz finding 27) */
-            t = CYL__P(fref)(ray, cyl, f->a, f->d, f->r, f->lf, f->A, f->sq, t,
-                             (flags & CYL_F_INSIDE) != 0);
-            tu = t * f->tsc;
-            if (tu < (CYL__L)ray->tmin || tu > (CYL__L)ray->tmax) {
-                tu = tu < (CYL__L)ray->tmin ? (CYL__L)ray->tmin : (CYL__L)ray->tmax;
-                t = tu / f->tsc;
-                tdev = CYL__P(labs)(t * f->tsc - tu);
-            }
-            for (i = 0; i < 3; i++) y[i] = CYL__LMADD(t, f->s[i], f->m[i]);
-            Y = CYL__P(ldot)(y, y);
-            G = CYL__P(ldot)(y, f->s);
-        }
-#endif
         o->part = CYL_SIDE;
         if (!(opts & CYL_NO_NORMAL)) {
             /* the outward normal y × a, |y × a| = |y||a| (y ⊥ a); it faces the ray where
@@ -2021,12 +2006,7 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         /* the plane crossing to about an ulp from double words (the plain quotient loses
            several where H|a| and a·w nearly cancel), kept in [tmin, tmax] */
         t = CYL__P(fcapt)(ray, cyl, f->a, f->d, f->H, f->lf, sg);
-        tu = t * f->tsc;
-        if (tu < (CYL__L)ray->tmin || tu > (CYL__L)ray->tmax) {
-            tu = tu < (CYL__L)ray->tmin ? (CYL__L)ray->tmin : (CYL__L)ray->tmax;
-            t = tu / f->tsc;
-            tdev = CYL__P(labs)(t * f->tsc - tu);
-        }
+        tdev = CYL__P(fclamp)(ray, f->tsc, &t, &tu);
 #endif
         o->part = sg > 0 ? CYL_CAP_HIGH : CYL_CAP_LOW;
         if (!(opts & CYL_NO_NORMAL)) {
@@ -2051,20 +2031,20 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                    : CYL__P(errup)(et * ((CYL__L)1 + (CYL__L)1 / 64) * f->tsc + tdev, tu, tr);
 }
 
-/* Options without CYL_PRECISE, where the fast path computes in double (the double API, and the
-   float API where double is hardware), start here: the fast path's formulas (and its exact
-   scaling) for the common case only, with as few operations, branches and live values as the
-   method allows. It answers origins within 2^30 radii and half heights, rays not parallel,
-   and tangent contacts except where caps clip them; anything else returns -1 (nothing
-   written) and the fast path answers. The double API's wall crossing is corrected by one
-   Newton step on the residual f(t) = |m + t·s|² − r²|a|², which removes the roundings of B, C,
-   √ and q (what remains is that of m and s), and a cap crossing is formed from double words;
-   t_err is note 8's residual bound at the returned t, so it holds whatever the step did. */
+/* Where the fast path computes in double (the double API, and the float API where double is
+   hardware), every option set starts here (CYL_PRECISE only for floats with an FMA): the fast
+   path's formulas and exact scaling with as few operations, branches and live values as the
+   method allows. It answers origins within 2^30 radii and half heights (2^28 for
+   CYL_PRECISE); far origins, an h/2 that rounds, a degenerate root pair and scaling out of
+   range return -1 (nothing written), and the solver answers (the fast path, for CYL_PRECISE
+   in the double API). The double API's crossings are corrected from double words as in the
+   fast path (fref, fcapt); t_err is the residual bound at the returned t. */
 CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                           int want, CYL__N(hit) *hits)
 {
     /* |o − c| <= 2^30 r and 2^30 h/2, as the fast path; CYL_PRECISE (here only for the float
-       API computed in double with an FMA) keeps the fast path's headroom of 2^28 */
+       API computed in double with an FMA) keeps a headroom of 2^28 (DEFAULT PATH AND PRECISE
+       TIER) */
     const CYL__L far2 = (opts & CYL_PRECISE) ? (CYL__L)72057594037927936.0 /* 2^56 */
                                              : (CYL__L)1152921504606846976.0; /* 2^60 */
     const CYL__L hi = CYL__LHI;
