@@ -75,11 +75,25 @@ TEST_BINS := $(foreach c,$(CONFIGS),$(foreach t,$(TEST_NAMES),$(BUILD)/$(c)/$(t)
 # and prerequisites to TEST_PREREQS.
 RUNNERS      := $(TEST_BINS)
 TEST_PREREQS :=
+
+# The packages must be there before any rule runs: with -j, make starts the compilers beside
+# the `deps` prerequisite, before it has installed them (seen with `make test -j2` on a fresh
+# machine: clang not found). So the goals that build install first, once, while this file is
+# read; sub-makes inherit CYL_DEPS_DONE and skip it.
+ifneq ($(filter test demo report,$(MAKECMDGOALS)),)
+ifneq ($(CYL_DEPS_DONE),1)
+DEPS_RC := $(shell bash scripts/install-deps.sh >&2; echo $$?)
+ifneq ($(DEPS_RC),0)
+$(error scripts/install-deps.sh failed with exit code $(DEPS_RC))
+endif
+export CYL_DEPS_DONE := 1
+endif
+endif
 -include mk/*.mk
 
 .PHONY: test deps
 deps:
-	@bash scripts/install-deps.sh
+	@[ "$(CYL_DEPS_DONE)" = 1 ] || bash scripts/install-deps.sh
 
 test: deps unity $(TEST_PREREQS) $(RUNNERS)
 	@bash scripts/run-tests.sh $(RESULTS) $(RUNNERS)
