@@ -113,10 +113,14 @@
    CYL_PRECISE starts on the fast path too, but certifies every decision: each is taken only
    where the computed value is farther from its threshold than an a-priori bound on its error
    (the parallel test, D against the tangent band, each root against the rims, each crossing
-   against tmin and tmax, and a start close enough for the final correction); anything closer,
-   every tangent or parallel contact, and origins on the surface within the roundings go to
-   the compensated solver, with every wall coefficient compensated and the rim decided from
-   the corrected roots (note 7). For the float API computed in double with a hardware FMA the
+   against tmin and tmax, and a start close enough for the final correction, which takes a
+   second step where one is not enough); anything closer, and every tangent or parallel
+   contact, go to the compensated solver, with every wall coefficient compensated and the rim
+   decided from the corrected roots (note 7). A crossing whose bound shows it within the t-range
+   band of tmin or tmax, 2^-(p−8)·max(|t|, r/|d|) (p = 24, 53), is kept or dropped as the plain
+   comparison says: either answer is right there, as for the tangent band. That decides the
+   t ≈ 0 crossing of a secondary ray (an origin on the surface, tmin = 0) without the solver
+   wherever its bound is that small. For the float API computed in double with a hardware FMA the
    bound is global (and the lean path serves it): |o − c| below 2^28 r and 2^28 h/2 keeps
    double's roundings under 2^-20 of every margin, inside float's band of 2^-16.
 
@@ -434,6 +438,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__EMASK 0xffu
 #define CYL__TWO_MANT 16777216.0f
 #define CYL__TANG CYL_TANGENT_TOLF
+#define CYL__TBAND 1.52587890625e-05f /* 2^-16 = 2^-(24-8): CYL_PRECISE's t-range band */
 #define CYL__PARA CYL_PARALLEL_TOLF
 #define CYL__RDIR 16.0f
 #define CYL__RLEN 65536.0f
@@ -462,6 +467,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__EMASK 0x7ffu
 #define CYL__TWO_MANT 9007199254740992.0
 #define CYL__TANG CYL_TANGENT_TOL
+#define CYL__TBAND 2.8421709430404007e-14 /* 2^-45 = 2^-(53-8) */
 #define CYL__PARA CYL_PARALLEL_TOL
 #define CYL__RDIR 18446744073709551616.0
 #define CYL__RLEN 3.402823669209384634633746e38
@@ -1371,6 +1377,7 @@ typedef struct CYL__P(fx) { /* one crossing of the fast path */
     CYL__L et;              /* CYL_PRECISE: a bound on |t − exact t| (else 0) */
     int sg;                 /* wall 0, low cap −1, high cap +1 */
     int ok;                 /* the crossing exists */
+    int steps;              /* exact-quadratic corrections of a wall crossing (1 or 2) */
 } CYL__P(fx);
 
 CYL__INL CYL__L CYL__P(labs)(CYL__L x) { return CYL__LABS(x); }
@@ -1448,10 +1455,12 @@ CYL__INL CYL__R CYL__P(fcapt)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
 
 /* A wall root to about an ulp: the solver's exact-quadratic correction (refine), with o − c
    exact (TwoSum, times the frame's length scale lf) and s, m, r²|a|² as double words. The plain
-   root loses ulps where |o − c| is far above r or where the coefficients cancel. */
+   root loses ulps where |o − c| is far above r or where the coefficients cancel. steps = 2
+   repeats the step from its own result: a start too far for one step (CYL_PRECISE's check in
+   the fast path) costs one more residual, not the solver. */
 CYL__INL CYL__R CYL__P(fref)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                             const CYL__R a[3], const CYL__R d[3], CYL__R r, const CYL__R lf[2],
-                            CYL__R A, CYL__R sq, CYL__R t, int upper)
+                            CYL__R A, CYL__R sq, CYL__R t, int upper, int steps)
 {
     CYL__R s[3], sl[3], m[3], ml[3], R2, R2l;
     CYL__R wh[3], wl[3], zero[3] = {0, 0, 0}, r2 = r * r, r2l = CYL__FMAR(r, r, -r2), aa, aal;
@@ -1462,7 +1471,10 @@ CYL__INL CYL__R CYL__P(fref)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
     CYL__P(acc_split)(CYL__P(dot_acc)(a, a), &aa, &aal);
     R2 = r2 * aa;
     R2l = CYL__FMAR(r2, aa, -R2) + r2 * aal + r2l * aa;
-    CYL__P(refine)(s, sl, m, ml, A, R2, R2l, sq, t, upper, &hi, &lo);
+    do {
+        CYL__P(refine)(s, sl, m, ml, A, R2, R2l, sq, t, upper, &hi, &lo);
+        t = hi;
+    } while (--steps > 0);
     return hi;
 }
 
@@ -1658,11 +1670,6 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
         if (!(mw <= far * r) || (hfin && !(mw <= far * H))) return -1;
         if (hfin && (H + H < hh || H + H > hh)) return -1;
     }
-    if (ce && CYL__P(labs)(MM - R2) <= 64 * u * (MM + R2) &&
-        (!(ray->tmin < 0 || ray->tmin > 0) || !(ray->tmax < 0 || ray->tmax > 0)))
-        /* CYL_PRECISE: an origin on the surface within the roundings and t = 0 an end of
-           the range (a secondary ray) would be handed over at the end: at once instead */
-        return -1;
     A = CYL__P(ldot)(s, s);
     aw = CYL__P(ldot)(a, w);
     ad = CYL__P(ldot)(a, d);
@@ -1687,6 +1694,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
     }
     c[0].ok = c[1].ok = 0;
     c[0].sg = c[1].sg = 0;
+    c[0].steps = c[1].steps = 1;
     c[0].t = c[1].t = c[0].et = c[1].et = 0;
     if (!parallel) {
         CYL__L r2 = r * r, band, ta, tb, P, D, B, C, Dp, q, tw[2], eD = 0, esq = 0;
@@ -1743,10 +1751,18 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                     /* the correction in the output solves the exact quadratic around its start
                        with this √(|a|²D): its error is the start's times that of √, which must
                        stay under an ulp of max(|t|, r/|d|) (rays near the axis direction
-                       without an FMA start far off) */
-                    if (ce && !(c[k].et * esq * md <=
-                                (CYL__L)0.25 * u * sq * (CYL__P(labs)(tw[k]) * md + r)))
-                        return -1;
+                       without an FMA start far off, origins far along a thin tube). Where one
+                       step is not enough, the first leaves at most twice its first-order error
+                       et·esq/sq plus its roundings, and a second step from there must be (a
+                       root that gives way to a cap plane is not corrected at all) */
+                    if (ce && !c[k].sg) {
+                        CYL__L at = CYL__P(labs)(tw[k]), lim = (CYL__L)0.25 * u * sq * (at * md + r);
+                        if (!(c[k].et * esq * md <= lim)) {
+                            CYL__L e1 = 2 * c[k].et * esq / sq + 2 * u * (at + r / md);
+                            if (!(e1 * esq * md <= lim)) return -1;
+                            c[k].steps = 2;
+                        }
+                    }
                     if (ce && hfin) {
                         CYL__L av = CYL__P(labs)(vn), ev;
                         ev = (eaw + eHn + CYL__P(labs)(tw[k]) * (ead + 6 * u * ma * md) +
@@ -1789,11 +1805,18 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
         int kept = 0, sel[2] = {0, 0};
         for (k = 0; ce && k < 2; k++) {
             /* CYL_PRECISE: a crossing too close to tmin or tmax to tell goes to the solver, for
-               every entry point alike (fuzz finding 28) */
-            CYL__L tu = c[k].t * tsc, eu = c[k].et * tsc;
+               every entry point alike (fuzz finding 28), unless it is inside the t-range band,
+               where either answer is right (DEFAULT PATH AND PRECISE TIER): [tu − eu, tu + eu]
+               holds an end and the exact t, so they are within 2·eu; 4·eu below 2^-(p−8) of
+               max(|tu| − eu, r/|d|) leaves a factor 2 for the roundings of this test. Secondary
+               rays (an origin on the surface, tmin = 0) are decided here. */
+            CYL__L tu = c[k].t * tsc, eu = c[k].et * tsc, sc;
             if (c[k].ok && !(tu + eu < tmin || tu - eu > tmax) &&
-                !(tu - eu > tmin && tu + eu < tmax))
-                return -1;
+                !(tu - eu > tmin && tu + eu < tmax)) {
+                sc = r / CYL__LSQRT(dd) * tsc;
+                if (CYL__P(labs)(tu) - eu > sc) sc = CYL__P(labs)(tu) - eu;
+                if (!(2 * eu * (1 + (CYL__L)1 / 64) <= (CYL__L)CYL__TBAND * sc)) return -1;
+            }
         }
         for (k = 0; k < 2; k++) {
             CYL__L tu = c[k].t * tsc;
@@ -1819,7 +1842,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                 if (x->sg || !tangent) {
                     /* the crossing to an ulp, kept in the accepted range */
                     t = x->sg ? CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg)
-                              : CYL__P(fref)(ray, cyl, a, d, r, lf, A, sq, t, sel[i]);
+                              : CYL__P(fref)(ray, cyl, a, d, r, lf, A, sq, t, sel[i], x->steps);
                     tdev = CYL__P(fclamp)(ray, tsc, &t, &tu);
                 }
 #endif
@@ -1976,7 +1999,7 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         if (!(flags & CYL_F_TANGENT)) {
             /* the solver's exact-quadratic correction from double words, kept in range */
             t = CYL__P(fref)(ray, cyl, f->a, f->d, f->r, f->lf, f->A, f->sq, t,
-                             (flags & CYL_F_INSIDE) != 0);
+                             (flags & CYL_F_INSIDE) != 0, 1);
             tdev = CYL__P(fclamp)(ray, f->tsc, &t, &tu);
         }
 #endif
@@ -2313,6 +2336,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__EMASK
 #undef CYL__TWO_MANT
 #undef CYL__TANG
+#undef CYL__TBAND
 #undef CYL__PARA
 #undef CYL__RDIR
 #undef CYL__RLEN
