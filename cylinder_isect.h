@@ -980,6 +980,12 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
    apart (a plain Newton step from near the midpoint would jump away). The start is within a
    few ulps, so hi + lo carries the root with about the residual's own rounding, u² relative
    to the terms, and hi is the root correctly rounded in nearly every case. */
+CYL__INL CYL__R CYL__P(qstep)(CYL__R F, CYL__R G, CYL__R sq, CYL__R A, int upper)
+{
+    if (!upper) return G > 0 ? (-G - sq) / A : (sq - G > 0 ? F / (sq - G) : 0);
+    return G < 0 ? (sq - G) / A : (G + sq > 0 ? -F / (G + sq) : 0);
+}
+
 CYL__INL void CYL__P(refine)(const CYL__R s[3], const CYL__R sl[3], const CYL__R m[3],
                              const CYL__R ml[3], CYL__R A, CYL__R R2, CYL__R R2l, CYL__R sq,
                              CYL__R t, int upper, CYL__R *hi, CYL__R *lo)
@@ -1001,10 +1007,7 @@ CYL__INL void CYL__P(refine)(const CYL__R s[3], const CYL__R sl[3], const CYL__R
     }
     CYL__P(acc_add)(&sf, -R2);
     F = sf.hi + (sf.lo - R2l);
-    if (!upper)
-        dt = G > 0 ? (-G - sq) / A : (sq - G > 0 ? F / (sq - G) : 0);
-    else
-        dt = G < 0 ? (sq - G) / A : (G + sq > 0 ? -F / (G + sq) : 0);
+    dt = CYL__P(qstep)(F, G, sq, A, upper);
     *hi = t + dt; /* |dt| is a few ulps of t: Fast2Sum applies */
     *lo = dt - (*hi - t);
 }
@@ -1453,29 +1456,48 @@ CYL__INL CYL__R CYL__P(fcapt)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
     return CYL__P(div_dw)(num.hi, num.lo, ad, adl);
 }
 
-/* A wall root to about an ulp: the solver's exact-quadratic correction (refine), with o − c
-   exact (TwoSum, times the frame's length scale lf) and s, m, r²|a|² as double words. The plain
-   root loses ulps where |o − c| is far above r or where the coefficients cancel. steps = 2
-   repeats the step from its own result: a start too far for one step (CYL_PRECISE's check in
-   the fast path) costs one more residual, not the solver. */
+/* A wall root to about an ulp: refine's exact-quadratic step, with the residual formed from the
+   crossing point instead of from m and s: x = (o − c) + t·d as a double word (o − c exact by
+   TwoSum, times the frame's length scale lf; t·d by TwoProd), y = a × x from exact products
+   (cross_dw) and r²|a|² as double words, so f(t) = |y|² − r²|a|² carries about u² of its terms,
+   as refine's does, with one double-word cross product instead of two. G = y·s (s as the
+   caller computed it) only scales the step, which is a few ulps: its plain rounding is
+   harmless. The plain root loses ulps where |o − c| is far above r or where the coefficients
+   cancel. steps = 2 repeats the step from its own result: a start too far for one step
+   (CYL_PRECISE's check in the fast path) costs one more residual, not the solver. */
 CYL__INL CYL__R CYL__P(fref)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
-                            const CYL__R a[3], const CYL__R d[3], CYL__R r, const CYL__R lf[2],
-                            CYL__R A, CYL__R sq, CYL__R t, int upper, int steps)
+                            const CYL__R a[3], const CYL__R d[3], const CYL__R s[3], CYL__R r,
+                            const CYL__R lf[2], CYL__R A, CYL__R sq, CYL__R t, int upper,
+                            int steps)
 {
-    CYL__R s[3], sl[3], m[3], ml[3], R2, R2l;
-    CYL__R wh[3], wl[3], zero[3] = {0, 0, 0}, r2 = r * r, r2l = CYL__FMAR(r, r, -r2), aa, aal;
-    CYL__R hi, lo;
+    CYL__R wh[3], wl[3], xh[3], xl[3], yh[3], yl[3], R2, R2l, aa, aal;
+    CYL__R r2 = r * r, r2l = CYL__FMAR(r, r, -r2);
+    int i;
     CYL__P(fwexact)(ray, cyl, lf, wh, wl);
-    CYL__P(cross_dw)(a, d, zero, s, sl);
-    CYL__P(cross_dw)(a, wh, wl, m, ml);
     CYL__P(acc_split)(CYL__P(dot_acc)(a, a), &aa, &aal);
     R2 = r2 * aa;
     R2l = CYL__FMAR(r2, aa, -R2) + r2 * aal + r2l * aa;
     do {
-        CYL__P(refine)(s, sl, m, ml, A, R2, R2l, sq, t, upper, &hi, &lo);
-        t = hi;
+        CYL__P(acc) sf;
+        CYL__R G = 0, F;
+        for (i = 0; i < 3; i++) {
+            CYL__R p = t * d[i], pe = CYL__FMAR(t, d[i], -p), xe;
+            CYL__P(two_sum)(wh[i], p, &xh[i], &xe);
+            xl[i] = xe + (wl[i] + pe);
+        }
+        CYL__P(cross_dw)(a, xh, xl, yh, yl);
+        sf = CYL__P(acc_first)(yh[0], yh[0]);
+        CYL__P(acc_prod)(&sf, yh[1], yh[1]);
+        CYL__P(acc_prod)(&sf, yh[2], yh[2]);
+        CYL__P(acc_add)(&sf, -R2);
+        for (i = 0; i < 3; i++) {
+            sf.lo += 2 * yh[i] * yl[i];
+            G += yh[i] * s[i];
+        }
+        F = sf.hi + (sf.lo - R2l);
+        t += CYL__P(qstep)(F, G, sq, A, upper);
     } while (--steps > 0);
-    return hi;
+    return t;
 }
 
 /* A corrected crossing t (frame) kept in [tmin, tmax], in the caller's units (tmin/tsc can be
@@ -1842,7 +1864,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                 if (x->sg || !tangent) {
                     /* the crossing to an ulp, kept in the accepted range */
                     t = x->sg ? CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg)
-                              : CYL__P(fref)(ray, cyl, a, d, r, lf, A, sq, t, sel[i], x->steps);
+                              : CYL__P(fref)(ray, cyl, a, d, s, r, lf, A, sq, t, sel[i], x->steps);
                     tdev = CYL__P(fclamp)(ray, tsc, &t, &tu);
                 }
 #endif
@@ -1998,7 +2020,7 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
 #if !CYL__WIDE
         if (!(flags & CYL_F_TANGENT)) {
             /* the solver's exact-quadratic correction from double words, kept in range */
-            t = CYL__P(fref)(ray, cyl, f->a, f->d, f->r, f->lf, f->A, f->sq, t,
+            t = CYL__P(fref)(ray, cyl, f->a, f->d, f->s, f->r, f->lf, f->A, f->sq, t,
                              (flags & CYL_F_INSIDE) != 0, 1);
             tdev = CYL__P(fclamp)(ray, f->tsc, &t, &tu);
         }
