@@ -227,6 +227,91 @@ static void test_precise_double(void)
     check_targets(53, "lib+PRECISE", all_families, BF_COUNT, PRECISE_ULPS_MAX);
 }
 
+/* CYL_PRECISE against t-range ends put just outside the band of the exact nearest crossing, on
+ * grazing rays (ray-axis distance r(1 ± 10^-k)), where the plain roundings move a root by about
+ * u/√|e| relative, more than the distance to the end: the tier must decide these right (by its
+ * bound, else by the solver), while inside the band it may take the plain comparison. The
+ * default path fails this check (116 of the 512 double cases take the wrong crossing). */
+#define TRANGE_CASES 300          /* grazing cases per precision and caps setting */
+#define TRANGE_BANDS 4.0          /* the end sits this many bands from the exact crossing */
+
+static void trange_case(int prec, const bench_case *k, unsigned opts, double tmin,
+                        cyl_ref_result *rr, int *rc, double *t, double *terr, int *part)
+{
+    cyl_ref_case in;
+    int j;
+    memset(&in, 0, sizeof in);
+    for (j = 0; j < 3; ++j) {
+        in.o[j] = k->o[j]; in.d[j] = k->d[j]; in.c[j] = k->c[j]; in.a[j] = k->a[j];
+    }
+    in.tmin = tmin; in.tmax = k->tmax; in.r = k->r; in.h = k->h;
+    in.opts = opts; in.prec = prec;
+    cyl_ref_intersect(&in, rr);
+    if (prec == 24) {
+        cylf_ray ray; cylf_cylinder cyl; cylf_hit h;
+        for (j = 0; j < 3; ++j) {
+            ray.o[j] = (float)k->o[j]; ray.d[j] = (float)k->d[j];
+            cyl.c[j] = (float)k->c[j]; cyl.a[j] = (float)k->a[j];
+        }
+        ray.tmin = (float)tmin; ray.tmax = (float)k->tmax; cyl.r = (float)k->r; cyl.h = (float)k->h;
+        *rc = cylf_intersect(&ray, &cyl, opts, &h);
+        *t = h.t; *terr = h.t_err; *part = h.part;
+    } else {
+        cyld_ray ray; cyld_cylinder cyl; cyld_hit h;
+        for (j = 0; j < 3; ++j) {
+            ray.o[j] = k->o[j]; ray.d[j] = k->d[j]; cyl.c[j] = k->c[j]; cyl.a[j] = k->a[j];
+        }
+        ray.tmin = tmin; ray.tmax = k->tmax; cyl.r = k->r; cyl.h = k->h;
+        *rc = cyld_intersect(&ray, &cyl, opts, &h);
+        *t = h.t; *terr = h.t_err; *part = h.part;
+    }
+}
+
+static void check_precise_trange_grazing(int prec)
+{
+    int i, caps, side, checked = 0, bad = 0;
+    size_t len = 0;
+    double band = ldexp(1.0, -(prec - 8));
+    msg[0] = 0;
+    for (i = 0; i < TRANGE_CASES; ++i)
+        for (caps = 0; caps < 2; ++caps) {
+            unsigned opts = CYL_PRECISE | (caps ? CYL_CAPS : 0u);
+            bench_case k;
+            cyl_ref_result rr;
+            int rc, part;
+            double t, terr, t0, scale, dl;
+            bench_case_gen(BF_GRAZING, prec, SEED, (uint64_t)i, &k);
+            trange_case(prec, &k, opts, k.tmin, &rr, &rc, &t, &terr, &part);
+            if (rr.status != CYL_HIT) continue;
+            t0 = rr.hit[0].t[0];
+            dl = sqrt(k.d[0] * k.d[0] + k.d[1] * k.d[1] + k.d[2] * k.d[2]);
+            scale = fabs(t0) > k.r / dl ? fabs(t0) : k.r / dl;
+            for (side = -1; side <= 1; side += 2) {
+                double tmin = t0 + side * TRANGE_BANDS * band * scale, te;
+                if (prec == 24) tmin = (double)(float)tmin;
+                trange_case(prec, &k, opts, tmin, &rr, &rc, &t, &terr, &part);
+                if (!(rr.margin > band)) continue; /* some other decision is within its band */
+                checked++;
+                te = rr.status == CYL_HIT ? rr.hit[0].t[0] + rr.hit[0].t[1] : 0;
+                if (rc == rr.status &&
+                    (rc != CYL_HIT || (part == rr.hit[0].part && fabs(t - te) <= terr)))
+                    continue;
+                bad++;
+                if (len < sizeof msg - 160)
+                    len += (size_t)snprintf(msg + len, sizeof msg - len,
+                                            "[case %d caps=%d tmin %s: rc %d (exact %d), t %.17g "
+                                            "(exact %.17g)] ", i, caps, side < 0 ? "below" : "above",
+                                            rc, rr.status, t, te);
+            }
+        }
+    /* cases with a hit whose every margin is above the band: 228 float, 512 double */
+    TEST_ASSERT_TRUE(checked > TRANGE_CASES / 2);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, bad, msg);
+}
+
+static void test_precise_trange_grazing_float(void) { check_precise_trange_grazing(24); }
+static void test_precise_trange_grazing_double(void) { check_precise_trange_grazing(53); }
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -238,5 +323,7 @@ int main(void)
     RUN_TEST(test_default_path_double);
     RUN_TEST(test_precise_float);
     RUN_TEST(test_precise_double);
+    RUN_TEST(test_precise_trange_grazing_float);
+    RUN_TEST(test_precise_trange_grazing_double);
     return UNITY_END();
 }
