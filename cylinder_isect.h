@@ -1999,7 +1999,6 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     CYL__L et = 0, nl[3] = {0, 0, 0}, face = 1, s1 = 0, es = 0, em = 0, Sw = 0, Sd = 0;
     CYL__L tu = t * f->tsc, tdev = 0;
     CYL__R tr;
-    int i;
 #if CYL__WIDE
     (void)ray;
 #endif
@@ -2025,7 +2024,9 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
             tdev = CYL__P(fclamp)(ray, f->tsc, &t, &tu);
         }
 #endif
-        for (i = 0; i < 3; i++) y[i] = CYL__LMADD(t, f->s[i], f->m[i]);
+        y[0] = CYL__LMADD(t, f->s[0], f->m[0]);
+        y[1] = CYL__LMADD(t, f->s[1], f->m[1]);
+        y[2] = CYL__LMADD(t, f->s[2], f->m[2]);
         Y = CYL__P(ldot)(y, y);
         G = CYL__P(ldot)(y, f->s);
         o->part = CYL_SIDE;
@@ -2056,7 +2057,9 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         o->part = sg > 0 ? CYL_CAP_HIGH : CYL_CAP_LOW;
         if (!(opts & CYL_NO_NORMAL)) {
             CYL__L k = sgn / f->na;
-            for (i = 0; i < 3; i++) nl[i] = k * f->a[i];
+            nl[0] = k * f->a[0];
+            nl[1] = k * f->a[1];
+            nl[2] = k * f->a[2];
             face = sgn * f->ad > 0 ? -1 : 1;
         }
         o->v = sg > 0 ? Hu : -Hu;
@@ -2067,10 +2070,11 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     o->t = tr;
     o->flags = flags;
     if (opts & CYL_OUTWARD) face = 1;
-    for (i = 0; i < 3; i++) {
-        CYL__L nk = face * nl[i];
-        o->n[i] = (CYL__R)nk;
-    }
+    /* component by component, not in a loop: gcc then keeps y and the normal in registers
+       (callgrind: 477 -> 461 instructions per float call, 744 -> 732 double) */
+    o->n[0] = (CYL__R)(face * nl[0]);
+    o->n[1] = (CYL__R)(face * nl[1]);
+    o->n[2] = (CYL__R)(face * nl[2]);
     o->t_err = (opts & CYL_NO_ERRBOUND)
                    ? CYL__MAXR * 2
                    : CYL__P(errup)(et * ((CYL__L)1 + (CYL__L)1 / 64) * f->tsc + tdev, tu, tr);
