@@ -972,6 +972,14 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
     return 1;
 }
 
+/* The shift δ from t to the lower (upper = 0) or upper root of F + 2Gδ + Aδ², sq = √(G² − AF),
+   in the form that does not cancel (refine below explains it; fref uses it too). */
+CYL__INL CYL__R CYL__P(qstep)(CYL__R F, CYL__R G, CYL__R sq, CYL__R A, int upper)
+{
+    if (!upper) return G > 0 ? (-G - sq) / A : (sq - G > 0 ? F / (sq - G) : 0);
+    return G < 0 ? (sq - G) / A : (G + sq > 0 ? -F / (G + sq) : 0);
+}
+
 /* One exact-quadratic correction of a wall root (both paths). With F = f(t) evaluated in
    compensated arithmetic and G = s·(m + t s) (= f'(t)/2), the roots of
    f(t + δ) = F + 2Gδ + Aδ² are δ = (−G ∓ √(G² − AF))/A, and G² − AF = |a|²D is the
@@ -980,12 +988,6 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
    apart (a plain Newton step from near the midpoint would jump away). The start is within a
    few ulps, so hi + lo carries the root with about the residual's own rounding, u² relative
    to the terms, and hi is the root correctly rounded in nearly every case. */
-CYL__INL CYL__R CYL__P(qstep)(CYL__R F, CYL__R G, CYL__R sq, CYL__R A, int upper)
-{
-    if (!upper) return G > 0 ? (-G - sq) / A : (sq - G > 0 ? F / (sq - G) : 0);
-    return G < 0 ? (sq - G) / A : (G + sq > 0 ? -F / (G + sq) : 0);
-}
-
 CYL__INL void CYL__P(refine)(const CYL__R s[3], const CYL__R sl[3], const CYL__R m[3],
                              const CYL__R ml[3], CYL__R A, CYL__R R2, CYL__R R2l, CYL__R sq,
                              CYL__R t, int upper, CYL__R *hi, CYL__R *lo)
@@ -1829,9 +1831,10 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
             /* CYL_PRECISE: a crossing too close to tmin or tmax to tell goes to the solver, for
                every entry point alike (fuzz finding 28), unless it is inside the t-range band,
                where either answer is right (DEFAULT PATH AND PRECISE TIER): [tu − eu, tu + eu]
-               holds an end and the exact t, so they are within 2·eu; 4·eu below 2^-(p−8) of
-               max(|tu| − eu, r/|d|) leaves a factor 2 for the roundings of this test. Secondary
-               rays (an origin on the surface, tmin = 0) are decided here. */
+               holds an end and the exact t, so they are within 2·eu, and max(|tu| − eu, r/|d|)
+               is at most the band's scale max(|t|, r/|d|) (1 + 1/64 covers the roundings of
+               r/|d| and of this test). Secondary rays (an origin on the surface, tmin = 0) are
+               decided here. */
             CYL__L tu = c[k].t * tsc, eu = c[k].et * tsc, sc;
             if (c[k].ok && !(tu + eu < tmin || tu - eu > tmax) &&
                 !(tu - eu > tmin && tu + eu < tmax)) {
