@@ -1458,45 +1458,60 @@ CYL__INL CYL__R CYL__P(fcapt)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
     return CYL__P(div_dw)(num.hi, num.lo, ad, adl);
 }
 
-/* A wall root to about an ulp: refine's exact-quadratic step, with the residual formed from the
-   crossing point instead of from m and s: x = (o − c) + t·d as a double word (o − c exact by
-   TwoSum, times the frame's length scale lf; t·d by TwoProd), y = a × x from exact products
-   (cross_dw) and r²|a|² as double words, so f(t) = |y|² − r²|a|² carries about u² of its terms,
-   as refine's does, with one double-word cross product instead of two. G = y·s (s as the
-   caller computed it) only scales the step, which is a few ulps: its plain rounding is
-   harmless. The plain root loses ulps where |o − c| is far above r or where the coefficients
-   cancel. steps = 2 repeats the step from its own result: a start too far for one step
-   (CYL_PRECISE's check in the fast path) costs one more residual, not the solver. */
+/* r²|a|² as a double word R2 + R2l (a exact). */
+CYL__INL void CYL__P(fr2)(const CYL__R a[3], CYL__R r, CYL__R *R2, CYL__R *R2l)
+{
+    CYL__R r2 = r * r, r2l = CYL__FMAR(r, r, -r2), aa, aal;
+    CYL__P(acc_split)(CYL__P(dot_acc)(a, a), &aa, &aal);
+    *R2 = r2 * aa;
+    *R2l = CYL__FMAR(r2, aa, -*R2) + r2 * aal + r2l * aa;
+}
+
+/* The wall residual f(t) = |y|² − r²|a|², y = a × x, x = (o − c) + t·d, from the crossing point:
+   o − c = wh + wl exact (fwexact), x as a double word (TwoSum, TwoProd), y from exact products
+   (cross_dw), so f carries about u of itself plus u² of its terms (|y|², r²|a|² and
+   |a|·|o − c| squared); also G = y·s (s as the caller computed it, plainly: it only scales a
+   correction of a few ulps). */
+CYL__INL CYL__R CYL__P(fres)(const CYL__R a[3], const CYL__R d[3], const CYL__R s[3],
+                            const CYL__R wh[3], const CYL__R wl[3], CYL__R R2, CYL__R R2l,
+                            CYL__R t, CYL__R *G)
+{
+    CYL__R xh[3], xl[3], yh[3], yl[3];
+    CYL__P(acc) sf;
+    int i;
+    for (i = 0; i < 3; i++) {
+        CYL__R p = t * d[i], pe = CYL__FMAR(t, d[i], -p), xe;
+        CYL__P(two_sum)(wh[i], p, &xh[i], &xe);
+        xl[i] = xe + (wl[i] + pe);
+    }
+    CYL__P(cross_dw)(a, xh, xl, yh, yl);
+    sf = CYL__P(acc_first)(yh[0], yh[0]);
+    CYL__P(acc_prod)(&sf, yh[1], yh[1]);
+    CYL__P(acc_prod)(&sf, yh[2], yh[2]);
+    CYL__P(acc_add)(&sf, -R2);
+    *G = 0;
+    for (i = 0; i < 3; i++) {
+        sf.lo += 2 * yh[i] * yl[i];
+        *G += yh[i] * s[i];
+    }
+    return sf.hi + (sf.lo - R2l);
+}
+
+/* A wall root to about an ulp: refine's exact-quadratic step on the residual of fres, which
+   forms y from the crossing point with one double-word cross product (refine's from m and s
+   takes two). The plain root loses ulps where |o − c| is far above r or where the
+   coefficients cancel. steps = 2 repeats the step from its own result: a start too far for
+   one step (CYL_PRECISE's check in the fast path) costs one more residual, not the solver. */
 CYL__INL CYL__R CYL__P(fref)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                             const CYL__R a[3], const CYL__R d[3], const CYL__R s[3], CYL__R r,
                             const CYL__R lf[2], CYL__R A, CYL__R sq, CYL__R t, int upper,
                             int steps)
 {
-    CYL__R wh[3], wl[3], xh[3], xl[3], yh[3], yl[3], R2, R2l, aa, aal;
-    CYL__R r2 = r * r, r2l = CYL__FMAR(r, r, -r2);
-    int i;
+    CYL__R wh[3], wl[3], R2, R2l, G, F;
     CYL__P(fwexact)(ray, cyl, lf, wh, wl);
-    CYL__P(acc_split)(CYL__P(dot_acc)(a, a), &aa, &aal);
-    R2 = r2 * aa;
-    R2l = CYL__FMAR(r2, aa, -R2) + r2 * aal + r2l * aa;
+    CYL__P(fr2)(a, r, &R2, &R2l);
     do {
-        CYL__P(acc) sf;
-        CYL__R G = 0, F;
-        for (i = 0; i < 3; i++) {
-            CYL__R p = t * d[i], pe = CYL__FMAR(t, d[i], -p), xe;
-            CYL__P(two_sum)(wh[i], p, &xh[i], &xe);
-            xl[i] = xe + (wl[i] + pe);
-        }
-        CYL__P(cross_dw)(a, xh, xl, yh, yl);
-        sf = CYL__P(acc_first)(yh[0], yh[0]);
-        CYL__P(acc_prod)(&sf, yh[1], yh[1]);
-        CYL__P(acc_prod)(&sf, yh[2], yh[2]);
-        CYL__P(acc_add)(&sf, -R2);
-        for (i = 0; i < 3; i++) {
-            sf.lo += 2 * yh[i] * yl[i];
-            G += yh[i] * s[i];
-        }
-        F = sf.hi + (sf.lo - R2l);
+        F = CYL__P(fres)(a, d, s, wh, wl, R2, R2l, t, &G);
         t += CYL__P(qstep)(F, G, sq, A, upper);
     } while (--steps > 0);
     return t;
@@ -1722,7 +1737,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
     c[0].t = c[1].t = c[0].et = c[1].et = 0;
     if (!parallel) {
         CYL__L r2 = r * r, band, ta, tb, P, D, B, C, Dp, q, tw[2], eD = 0, esq = 0;
-        int swap;
+        int swap, cx = 0; /* cx: C from the exact o − c */
         /* D = r²A − P² = A(r² − ρ²), P = w·s: the wall is crossed iff D >= 0 */
         P = CYL__P(ldot)(w, s);
         D = CYL__LMADD(r2, A, -(P * P));
@@ -1741,6 +1756,19 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                 /* roots of A t² + 2B t + C, B = m·s, C = |m|² − r²|a|², B² − AC = |a|²D */
                 B = CYL__P(ldot)(m, s);
                 C = MM - R2;
+#if !CYL__WIDE
+                if (ce && CYL__P(labs)(C) <= 64 * u * (MM + R2)) {
+                    /* CYL_PRECISE, an origin on the surface within the roundings (a secondary
+                       ray): C = f(0) from the exact o − c (fres at t = 0), so that the crossing
+                       near t = 0 is known to about u of itself and is decided against tmin = 0
+                       without the solver */
+                    CYL__R wh[3], wl[3], R2h, R2l, G0;
+                    CYL__P(fwexact)(ray, cyl, lf, wh, wl);
+                    CYL__P(fr2)(a, r, &R2h, &R2l);
+                    C = CYL__P(fres)(a, d, s, wh, wl, R2h, R2l, 0, &G0);
+                    cx = 1;
+                }
+#endif
                 Dp = D > 0 ? D : 0;
                 sq = CYL__LSQRT(aa * Dp);
                 q = -(B + (B < 0 ? -sq : sq));
@@ -1755,8 +1783,12 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                        t = q/A or C/q (1/(x(1 − ε)) <= (1 + 2ε)/x for ε <= 1/4) */
                     CYL__L eB, eC, aq = CYL__P(labs)(q), rq, rA = eA / A, g, e0, e1;
                     eB = 6 * ma * mw * (6 * u * ms + 2 * es) + tiny;
-                    eC = 3 * u * MM + em * (12 * ma * mw + 3 * em) + 7 * u * R2 +
-                         u * CYL__P(labs)(C) + tiny;
+                    /* C from fres carries u of itself and u² of |m|², r²|a|² and |a|²|o − c|²
+                       (<= 9 ma² mw²), over-covered here */
+                    eC = cx ? 2 * u * CYL__P(labs)(C) +
+                                  64 * u * u * (MM + R2 + 9 * ma * ma * mw * mw) + tiny
+                            : 3 * u * MM + em * (12 * ma * mw + 3 * em) + 7 * u * R2 +
+                                  u * CYL__P(labs)(C) + tiny;
                     esq = aa * (eD + 4 * u * Dp) / sq + u * sq;
                     rq = (eB + esq + u * (sq + aq)) / aq;
                     if (!(rq < (CYL__L)0.25)) return -1;
@@ -1808,6 +1840,20 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                             c[k].et = ((eHn + eaw + u * CYL__P(labs)(num) +
                                         CYL__P(labs)(c[k].t) * ead) * 2 / aad +
                                        u * CYL__P(labs)(c[k].t)) * sf;
+#if !CYL__WIDE
+                            if (CYL__P(labs)(num) <= 4 * (eHn + eaw)) {
+                                /* an origin on the cap plane within the roundings (a secondary
+                                   ray from a cap): the crossing from double words (fcapt: its
+                                   numerator and a·d carry u² of their terms, its quotient
+                                   rounds twice), decided against tmin = 0 without the solver */
+                                CYL__L at;
+                                c[k].t = CYL__P(fcapt)(ray, cyl, a, d, H, lf, c[k].sg);
+                                at = CYL__P(labs)(c[k].t);
+                                c[k].et = (2 * u * at + 16 * u * u *
+                                           (Hn + 3 * ma * mw + at * 3 * ma * md) * 2 / aad) * sf +
+                                          tiny;
+                            }
+#endif
                         }
                         /* a grazing interval's cap end must still lie on its disk */
                         c[k].ok = !tangent || CYL__P(fdisk)(m, s, R2, c[k].t);
