@@ -80,7 +80,7 @@ TEST_PREREQS :=
 # the `deps` prerequisite, before it has installed them (seen with `make test -j2` on a fresh
 # machine: clang not found). So the goals that build install first, once, while this file is
 # read; sub-makes inherit CYL_DEPS_DONE and skip it.
-ifneq ($(filter test demo report,$(MAKECMDGOALS)),)
+ifneq ($(filter test demo report insn,$(MAKECMDGOALS)),)
 ifneq ($(CYL_DEPS_DONE),1)
 DEPS_RC := $(shell bash scripts/install-deps.sh >&2; echo $$?)
 ifneq ($(DEPS_RC),0)

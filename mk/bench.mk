@@ -2,6 +2,7 @@
 #   make test     also runs build/bench/test_accuracy (accuracy targets on a fixed-seed sample)
 #   make report   full benchmark: bench/REPORT.md and bench/error_vs_time.png
 #                 (BENCH_SEED, BENCH_N change the seed and the cases per family)
+#   make insn     instructions per call of each variant under callgrind (INSN_FAMILIES)
 BENCH_BUILD  := $(BUILD)/bench
 BENCH_SRCS   := bench/eval.c bench/cases.c ref/cyl_ref.c
 BENCH_HDRS   := cylinder_isect.h bench/eval.h bench/cases.h bench/alt_formulations.h ref/cyl_ref.h
@@ -35,12 +36,12 @@ $(BENCH_BUILD)/bench: bench/bench.c $(BENCH_SRCS) $(BENCH_HDRS)
 	$(GCC) $(BENCH_WARN) $(BENCH_OPT) -DBENCH_CFLAGS='"$(BENCH_OPT)"' $(BENCH_INC) $< $(BENCH_SRCS) $(BENCH_LIBS) -o $@
 
 # alt_formulations.h is used by other code (the viewer): strict C with clang and strict C++.
-$(BENCH_BUILD)/alt_check.stamp: bench/alt_formulations.h cylinder_isect.h
+$(BENCH_BUILD)/alt_check.stamp: bench/alt_formulations.h cylinder_isect.h bench/insn.c
 	@mkdir -p $(@D)
 	echo '#include "bench/alt_formulations.h"' | $(CLANG) -x c $(WARN_C) -I. -fsyntax-only -
 	echo '#include "bench/alt_formulations.h"' | $(CXX_GCC) -x c++ $(WARN_CXX) -I. -fsyntax-only -
 	echo '#include "cyl_ref.h"' | $(CXX_GCC) -x c++ $(WARN_CXX) -I. -Iref -fsyntax-only -
-	$(CLANG) $(WARN_C) $(BENCH_INC) -fsyntax-only $(BENCH_SRCS) bench/bench.c
+	$(CLANG) $(WARN_C) $(BENCH_INC) -fsyntax-only $(BENCH_SRCS) bench/bench.c bench/insn.c
 	@touch $@
 
 # The same targets for the fast path's other arithmetic: the float API in float, and Kahan's
@@ -68,6 +69,19 @@ report: deps $(BENCH_BUILD)/bench $(REPORT_VENV)/.installed
 	$(BENCH_BUILD)/bench --seed $(BENCH_SEED) --n $(BENCH_N) --json $(BENCH_BUILD)/results.json | tee $(BENCH_BUILD)/bench.txt
 	BENCH_LIB_REV="$(BENCH_LIB_REV)" $(REPORT_VENV)/bin/python bench/report.py $(BENCH_BUILD)/results.json bench/REPORT.md bench/error_vs_time.png docs/accuracy.md
 	$(MAKE) --no-print-directory readme
+
+# Instructions per call under callgrind (exact on a shared machine; time is in the report).
+# The flags of the callgrind figures quoted in the notes: hardware FMA, inline sqrt.
+INSN_OPT     ?= -O2 -march=x86-64-v3 -fno-math-errno
+INSN_FAMILIES ?= well grazing huge
+$(BENCH_BUILD)/insn: bench/insn.c $(BENCH_SRCS) $(BENCH_HDRS)
+	@mkdir -p $(@D)
+	$(GCC) $(BENCH_WARN) $(INSN_OPT) $(BENCH_INC) $< $(BENCH_SRCS) $(BENCH_LIBS) -o $@
+TEST_PREREQS += $(BENCH_BUILD)/insn
+
+.PHONY: insn
+insn: deps $(BENCH_BUILD)/insn
+	@bash scripts/insn.sh $(BENCH_BUILD)/insn "$(INSN_FAMILIES)"
 
 $(BENCH_BUILD)/probe: bench/probe.c $(BENCH_SRCS) $(BENCH_HDRS)
 	@mkdir -p $(@D)
