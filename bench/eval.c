@@ -49,6 +49,7 @@ static double ev_now(void)
     EV_DEF(P, lib, cyl##P##_intersect, 0u)                                                   \
     EV_DEF(P, precise, cyl##P##_intersect, CYL_PRECISE)                                      \
     EV_DEF(P, noerr, cyl##P##_intersect, CYL_NO_ERRBOUND)                                    \
+    EV_DEF(P, nonrm, cyl##P##_intersect, CYL_NO_NORMAL)                                      \
     EV_DEF(P, lean, cyl##P##_intersect, CYL_NO_ERRBOUND | CYL_NO_NORMAL)                     \
     EV_DEF(P, trusted, cyl##P##_intersect, CYL_TRUSTED)                                      \
     EV_DEF(P, outward, cyl##P##_intersect, CYL_OUTWARD)                                      \
@@ -66,6 +67,7 @@ EV_LIST(d)
     EV_ROW(P, PREC, "lib", EV_LIB, 0u, lib),                                                 \
     EV_ROW(P, PREC, "lib+PRECISE", EV_LIB, CYL_PRECISE, precise),                            \
     EV_ROW(P, PREC, "lib+NO_ERRBOUND", EV_LIB, CYL_NO_ERRBOUND, noerr),                      \
+    EV_ROW(P, PREC, "lib+NO_NORMAL", EV_LIB, CYL_NO_NORMAL, nonrm),                          \
     EV_ROW(P, PREC, "lib+NO_ERRBOUND+NO_NORMAL", EV_LIB, CYL_NO_ERRBOUND | CYL_NO_NORMAL,     \
            lean),                                                                            \
     EV_ROW(P, PREC, "lib+TRUSTED", EV_LIB, CYL_TRUSTED, trusted),                            \
