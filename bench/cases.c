@@ -2,6 +2,7 @@
 #include "cases.h"
 
 #include <math.h>
+#include <string.h>
 
 static const char *const family_names[BF_COUNT] = {
     "well", "far", "parallel", "grazing", "thin", "surface", "huge", "tiny", "axis", "trange"
@@ -10,6 +11,13 @@ static const char *const family_names[BF_COUNT] = {
 const char *bench_family_name(int family)
 {
     return family >= 0 && family < BF_COUNT ? family_names[family] : "?";
+}
+
+int bench_family_index(const char *name)
+{
+    int fam = 0;
+    while (fam < BF_COUNT && strcmp(name, bench_family_name(fam)) != 0) ++fam;
+    return fam;
 }
 
 uint64_t bench_rng_next(uint64_t *state)

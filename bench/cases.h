@@ -32,6 +32,8 @@ typedef struct bench_case {
 } bench_case;
 
 const char *bench_family_name(int family);
+/* The family of that name ("well", "far", ...), or BF_COUNT for none (command lines). */
+int bench_family_index(const char *name);
 
 /* Fills *out with case number index of the family, in precision prec (24 or 53). */
 void bench_case_gen(int family, int prec, uint64_t seed, uint64_t index, bench_case *out);

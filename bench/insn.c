@@ -53,8 +53,7 @@ int main(int argc, char **argv)
         return 2;
     }
     prec = atoi(argv[1]);
-    for (fam = 0; fam < BF_COUNT; ++fam)
-        if (!strcmp(argv[2], bench_family_name(fam))) break;
+    fam = bench_family_index(argv[2]);
     io.caps = atoi(argv[3]) != 0;
     io.n = argc > 5 ? atoi(argv[5]) : 2000;
     io.v = NULL;

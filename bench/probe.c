@@ -23,8 +23,7 @@ int main(int argc, char **argv)
         return 2;
     }
     prec = atoi(argv[1]);
-    for (fam = 0; fam < BF_COUNT; ++fam)
-        if (!strcmp(argv[2], bench_family_name(fam))) break;
+    fam = bench_family_index(argv[2]);
     caps = atoi(argv[3]);
     idx = atoi(argv[4]);
     if (argc > 5) seed = strtoull(argv[5], NULL, 0);
