@@ -1382,7 +1382,9 @@ typedef struct CYL__P(fx) { /* one crossing of the fast path */
     CYL__L et;              /* CYL_PRECISE: a bound on |t − exact t| (else 0) */
     int sg;                 /* wall 0, low cap −1, high cap +1 */
     int ok;                 /* the crossing exists */
-    int steps;              /* exact-quadratic corrections of a wall crossing (1 or 2) */
+    int steps;              /* corrections in the output: a wall crossing's exact-quadratic
+                               steps (1 or 2); a cap crossing's fcapt (1, or 0: t is already
+                               fcapt's) */
 } CYL__P(fx);
 
 CYL__INL CYL__L CYL__P(labs)(CYL__L x) { return CYL__LABS(x); }
@@ -1848,6 +1850,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                                    rounds twice), decided against tmin = 0 without the solver */
                                 CYL__L at;
                                 c[k].t = CYL__P(fcapt)(ray, cyl, a, d, H, lf, c[k].sg);
+                                c[k].steps = 0;
                                 at = CYL__P(labs)(c[k].t);
                                 c[k].et = (2 * u * at + 16 * u * u *
                                            (Hn + 3 * ma * mw + at * 3 * ma * md) * 2 / aad) * sf +
@@ -1910,7 +1913,7 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                 CYL__R tr;
                 tu = t * tsc;
 #if !CYL__WIDE
-                if (x->sg || !tangent) {
+                if (x->steps && (x->sg || !tangent)) {
                     /* the crossing to an ulp, kept in the accepted range */
                     t = x->sg ? CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg)
                               : CYL__P(fref)(ray, cyl, a, d, s, r, lf, A, sq, t, sel[i], x->steps);
