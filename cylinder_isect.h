@@ -980,7 +980,8 @@ CYL__INL CYL__R CYL__P(qstep)(CYL__R F, CYL__R G, CYL__R sq, CYL__R A, int upper
     return G < 0 ? (sq - G) / A : (G + sq > 0 ? -F / (G + sq) : 0);
 }
 
-/* One exact-quadratic correction of a wall root (both paths). With F = f(t) evaluated in
+/* The solver's exact-quadratic correction of a wall root (the fast and lean paths take the
+   same step, qstep, on fres's residual: see fref). With F = f(t) evaluated in
    compensated arithmetic and G = s·(m + t s) (= f'(t)/2), the roots of
    f(t + δ) = F + 2Gδ + Aδ² are δ = (−G ∓ √(G² − AF))/A, and G² − AF = |a|²D is the
    discriminant the solver already has (it does not depend on the shift). Each root is taken in
@@ -2070,7 +2071,7 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         CYL__L y[3], Y, G, v;
 #if !CYL__WIDE
         if (!(flags & CYL_F_TANGENT)) {
-            /* the solver's exact-quadratic correction from double words, kept in range */
+            /* the exact-quadratic correction from double words (fref), kept in range */
             t = CYL__P(fref)(ray, cyl, f->a, f->d, f->s, f->r, f->lf, f->A, f->sq, t,
                              (flags & CYL_F_INSIDE) != 0, 1);
             tdev = CYL__P(fclamp)(ray, f->tsc, &t, &tu);
