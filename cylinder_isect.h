@@ -101,7 +101,9 @@
    for double ones, no live value it does not need, a normal from (a × x) × a, and the
    residual bound of note 8, also in double. For the double API (and the float API computed in
    float) the crossing is then corrected from double words: a wall root by the exact-quadratic
-   step of note 4, a cap crossing as in note 5; so t is about an ulp in both APIs. Its
+   step of note 4, a cap crossing as in note 5; so t is about an ulp in both APIs. For an
+   origin on the surface within the roundings (a secondary ray) C = f(0) is formed from the
+   exact o − c first, so the crossing near t = 0 is decided from an accurate value. Its
    decisions (tangency, rim, tmin/tmax) carry the plain roundings: within a few ulps of a
    threshold they can go either way, and farther for origins far from the axis (the rounding
    of o − c is about u·|o − c|/r of e). t_err is rigorous on every path (note 8). Inputs
@@ -934,6 +936,16 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
         P = CYL__P(dot2)(f->w, f->s) + (CYL__P(dot)(f->w, f->sl) + CYL__P(dot)(f->wl, f->s));
         B = CYL__P(dot)(f->m, f->s);
         C = CYL__FMAR(-r2, f->aa, CYL__P(dot)(f->m, f->m));
+        if (CYL__P(abs)(C) <= 64 * CYL__U * (CYL__P(dot)(f->m, f->m) + r2 * f->aa)) {
+            /* an origin on the surface within the roundings: C compensated from the double
+               words m + ml and r²|a|² (see fc0, fuzz finding 31) */
+            CYL__P(acc) sc;
+            CYL__R p = r2 * f->aa;
+            sc.hi = -p;
+            sc.lo = -(CYL__FMAR(r2, f->aa, -p) + r2 * f->aal + r2l * f->aa);
+            CYL__P(acc_dot_dw)(&sc, f->m, f->ml, f->m, f->ml);
+            C = sc.hi + sc.lo;
+        }
         D = CYL__P(dop)(r2, f->A, P, P) + r2l * f->A;
     }
     if (f->coarse) {
@@ -1500,6 +1512,20 @@ CYL__INL CYL__R CYL__P(fres)(const CYL__R a[3], const CYL__R d[3], const CYL__R 
     return sf.hi + (sf.lo - R2l);
 }
 
+/* C = f(0) = |a × (o − c)|² − r²|a|² from the exact o − c (fres at t = 0): about u of itself
+   plus u² of its terms. The plain C rounds by about u·|m|², which for an origin on the surface
+   (a secondary ray) is all of it; the crossing near t = 0 then moves by about u·r²|a|²/|q|,
+   and along a ray nearly parallel to the axis that is far past a rim (fuzz finding 31). */
+CYL__INL CYL__R CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                           const CYL__R a[3], const CYL__R d[3], const CYL__R s[3], CYL__R r,
+                           const CYL__R lf[2])
+{
+    CYL__R wh[3], wl[3], R2, R2l, G0;
+    CYL__P(fwexact)(ray, cyl, lf, wh, wl);
+    CYL__P(fr2)(a, r, &R2, &R2l);
+    return CYL__P(fres)(a, d, s, wh, wl, R2, R2l, 0, &G0);
+}
+
 /* A wall root to about an ulp: refine's exact-quadratic step on the residual of fres, which
    forms y from the crossing point with one double-word cross product (refine's from m and s
    takes two). The plain root loses ulps where |o − c| is far above r or where the
@@ -1760,15 +1786,12 @@ CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                 B = CYL__P(ldot)(m, s);
                 C = MM - R2;
 #if !CYL__WIDE
-                if (ce && CYL__P(labs)(C) <= 64 * u * (MM + R2)) {
-                    /* CYL_PRECISE, an origin on the surface within the roundings (a secondary
-                       ray): C = f(0) from the exact o − c (fres at t = 0), so that the crossing
-                       near t = 0 is known to about u of itself and is decided against tmin = 0
-                       without the solver */
-                    CYL__R wh[3], wl[3], R2h, R2l, G0;
-                    CYL__P(fwexact)(ray, cyl, lf, wh, wl);
-                    CYL__P(fr2)(a, r, &R2h, &R2l);
-                    C = CYL__P(fres)(a, d, s, wh, wl, R2h, R2l, 0, &G0);
+                if (CYL__P(labs)(C) <= 64 * u * (MM + R2)) {
+                    /* an origin on the surface within the roundings (a secondary ray): C from
+                       the exact o − c (fc0), so that the crossing near t = 0 is known to about
+                       u of itself for the rim and, in CYL_PRECISE, against tmin = 0 without
+                       the solver */
+                    C = CYL__P(fc0)(ray, cyl, a, d, s, r, lf);
                     cx = 1;
                 }
 #endif
@@ -2229,6 +2252,11 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         if (tf && (opts & CYL_NO_TANGENT)) return 0;
         B = CYL__P(ldot)(f.m, f.s);
         C = MM - f.R2;
+#if !CYL__WIDE
+        /* an origin on the surface within the roundings: C from the exact o − c (fc0) */
+        if (CYL__P(labs)(C) <= 64 * (CYL__L)CYL__LU * (MM + f.R2))
+            C = CYL__P(fc0)(ray, cyl, f.a, f.d, f.s, r, f.lf);
+#endif
         f.sq = sq = CYL__LSQRT(f.aa * (D > 0 ? D : 0));
         q = -(B + (B < 0 ? -sq : sq));
         if (!(CYL__P(labs)(q) >= CYL__LMIN)) return -1;

@@ -344,6 +344,31 @@ static void test_order2_widening_rounds_up(void)
                            "double: widened t_err below t_err + difference");
 }
 
+/* Finding 31 (fixed by the commit that added it; grid corpus:
+ * fuzz/corpus_grid/finding-double-surface-origin-parallel-rim). Double, default tier, every
+ * entry point and path (lean, fast, solver): the origin is on the wall within the roundings
+ * (|o - c| = r, 0.5 off its plane) and the ray is almost parallel to the axis (axial speed
+ * 2.8e13 times the radial one). The plain C = |m|^2 - r^2|a|^2 rounded to 0, the crossing near
+ * t = 0 came out 1e-9 off, and the rim was decided there, where v = 15 (inside h/2 = 61)
+ * instead of -1.3e7: a hit on a tube the exact answer misses (margin 1.0e-6). Found by
+ * scripts/ci-fuzz.sh in a fresh clone. Exact answer (ref/): no hit, open or capped. */
+static void test_double_surface_origin_parallel_ray_rim(void)
+{
+  cyld_ray ray = {{0x1.e8p+27, 0x1.e8p+3, -0x1p-1}, {0x1p-1, 0x1.34p+53, -0x1.ecp+8},
+                  -0x1.4p+1, 0x1.fcp+6};
+  cyld_cylinder cyl = {{0, 0, 0}, {0, 0x1.e8p+27, 0}, 0x1.e8p+27, 0x1.e8p+6};
+  unsigned opts[] = {0u, CYL_CAPS, CYL_PRECISE, CYL_CAPS | CYL_PRECISE,
+                     CYL_TRUSTED | CYL_NO_NORMAL | CYL_NO_ERRBOUND | CYL_OUTWARD};
+  size_t i;
+  for (i = 0; i < sizeof opts / sizeof opts[0]; i++) {
+    cyld_hit h[2];
+    memset(h, 0, sizeof h);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, cyld_occluded(&ray, &cyl, opts[i]), "occluded");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(CYL_MISS, cyld_intersect(&ray, &cyl, opts[i], h), "intersect");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, cyld_intersect_all(&ray, &cyl, opts[i], h), "intersect_all");
+  }
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -379,5 +404,6 @@ int main(void)
   RUN_TEST(test_double_subnormal_height_cap_bound);
   RUN_TEST(test_double_huge_radius_tiny_axis_overflow);
   RUN_TEST(test_order2_widening_rounds_up);
+  RUN_TEST(test_double_surface_origin_parallel_ray_rim);
   return UNITY_END();
 }
