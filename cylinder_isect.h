@@ -269,6 +269,14 @@
 #else
 #define CYL__SLOW static inline
 #endif
+/* The fast path out of line under -Os too: inlined into an entry point, its frame adds to the
+   solver's (make sizes: Cortex-M4F's open tube took 776 B of stack inlined, 528 B not).
+   Options still fold: gcc specialises it for constant ones (.constprop). */
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE_SIZE__) && !defined(CYL_INTERNAL)
+#define CYL__FAST static __attribute__((noinline, unused))
+#else
+#define CYL__FAST CYL__INL
+#endif
 #ifndef CYL_HEADER_FILENAME
 #define CYL_HEADER_FILENAME "cylinder_isect.h"
 #endif
@@ -886,6 +894,19 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
    |ê − e| <= about 8u + O(u²)|w|²/r², which is what CYL_TANGENT_TOL is set against; the
    precise path also compensates A and P². Returns 0 (no crossing), or 1 with t[0] <= t[1]
    and *tangent set. */
+/* The solver's C = |m|² − r²|a|² compensated from the double words m + ml and r²|a|², for an
+   origin on the surface within the roundings (see fc0, fuzz finding 31); out of line, like fc0,
+   so its double words do not stay on the solver's stack. */
+CYL__SLOW CYL__R CYL__P(wallc)(const CYL__P(frame) *f, CYL__R r2, CYL__R r2l)
+{
+    CYL__P(acc) sc;
+    CYL__R p = r2 * f->aa;
+    sc.hi = -p;
+    sc.lo = -(CYL__FMAR(r2, f->aa, -p) + r2 * f->aal + r2l * f->aa);
+    CYL__P(acc_dot_dw)(&sc, f->m, f->ml, f->m, f->ml);
+    return sc.hi + sc.lo;
+}
+
 CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2],
                          int *tangent)
 {
@@ -936,16 +957,8 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
         P = CYL__P(dot2)(f->w, f->s) + (CYL__P(dot)(f->w, f->sl) + CYL__P(dot)(f->wl, f->s));
         B = CYL__P(dot)(f->m, f->s);
         C = CYL__FMAR(-r2, f->aa, CYL__P(dot)(f->m, f->m));
-        if (CYL__P(abs)(C) <= 64 * CYL__U * (CYL__P(dot)(f->m, f->m) + r2 * f->aa)) {
-            /* an origin on the surface within the roundings: C compensated from the double
-               words m + ml and r²|a|² (see fc0, fuzz finding 31) */
-            CYL__P(acc) sc;
-            CYL__R p = r2 * f->aa;
-            sc.hi = -p;
-            sc.lo = -(CYL__FMAR(r2, f->aa, -p) + r2 * f->aal + r2l * f->aa);
-            CYL__P(acc_dot_dw)(&sc, f->m, f->ml, f->m, f->ml);
-            C = sc.hi + sc.lo;
-        }
+        if (CYL__P(abs)(C) <= 64 * CYL__U * (CYL__P(dot)(f->m, f->m) + r2 * f->aa))
+            C = CYL__P(wallc)(f, r2, r2l);
         D = CYL__P(dop)(r2, f->A, P, P) + r2l * f->A;
     }
     if (f->coarse) {
@@ -1515,8 +1528,9 @@ CYL__INL CYL__R CYL__P(fres)(const CYL__R a[3], const CYL__R d[3], const CYL__R 
 /* C = f(0) = |a × (o − c)|² − r²|a|² from the exact o − c (fres at t = 0): about u of itself
    plus u² of its terms. The plain C rounds by about u·|m|², which for an origin on the surface
    (a secondary ray) is all of it; the crossing near t = 0 then moves by about u·r²|a|²/|q|,
-   and along a ray nearly parallel to the axis that is far past a rim (fuzz finding 31). */
-CYL__INL CYL__R CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+   and along a ray nearly parallel to the axis that is far past a rim (fuzz finding 31). Out of
+   line: it is rare, and inlined its double words would stay on the caller's stack. */
+CYL__SLOW CYL__R CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                            const CYL__R a[3], const CYL__R d[3], const CYL__R s[3], CYL__R r,
                            const CYL__R lf[2])
 {
@@ -1681,7 +1695,7 @@ CYL__INL int CYL__P(fscale)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
 
 /* want: 0 occluded (returns 1 or 0), 1 the nearest hit into hits[0], 2 every hit.
    Returns -1 (nothing written) when the solver must answer. */
-CYL__INL int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+CYL__FAST int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                          int want, CYL__N(hit) *hits)
 {
     const CYL__L u = CYL__LU, sf = (CYL__L)1 + (CYL__L)1 / 64, tiny = CYL__LMIN;
