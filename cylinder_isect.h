@@ -894,20 +894,20 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
    |ê − e| <= about 8u + O(u²)|w|²/r², which is what CYL_TANGENT_TOL is set against; the
    precise path also compensates A and P². Returns 0 (no crossing), or 1 with t[0] <= t[1]
    and *tangent set. */
-/* The solver's C = |m|² − r²|a|² compensated from the double words m + ml and r²|a|², for an
-   origin on the surface within the roundings (see fc0, fuzz finding 31); out of line, like fc0,
-   so its double words do not stay on the solver's stack. */
-CYL__SLOW CYL__R CYL__P(wallc)(const CYL__P(frame) *f, CYL__R r2, CYL__R r2l)
+/* The solver's C = |m|² − r²|a|² as one compensated sum of the double words m + ml and
+   R2 + R2l = r²|a|²: CYL_PRECISE's, and the default mode's for an origin on the surface within
+   the roundings (see fc0, fuzz finding 31). Out of line, like fc0, so that its double words do
+   not stay on the solver's stack. */
+CYL__SLOW CYL__R CYL__P(wallc)(const CYL__P(frame) *f, CYL__R R2, CYL__R R2l)
 {
     CYL__P(acc) sc;
-    CYL__R p = r2 * f->aa;
-    sc.hi = -p;
-    sc.lo = -(CYL__FMAR(r2, f->aa, -p) + r2 * f->aal + r2l * f->aa);
+    sc.hi = -R2;
+    sc.lo = -R2l;
     CYL__P(acc_dot_dw)(&sc, f->m, f->ml, f->m, f->ml);
     return sc.hi + sc.lo;
 }
 
-CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2],
+CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2],
                          int *tangent)
 {
     CYL__R P, D, B, C, sq, q, band, r2 = f->r * f->r;
@@ -923,8 +923,8 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
         CYL__P(acc_split)(sp, &P, &Pl);
         CYL__P(acc_dot_dw)(&sb, f->m, f->ml, f->s, f->sl);
         B = sb.hi + sb.lo;
-        /* C = |m|² − r²|a|² and D = r²|s|² − P², each as one compensated sum; r²|a|² is
-           kept as a double word for the root refinement. */
+        /* D = r²|s|² − P² as one compensated sum, C = |m|² − r²|a|² from r²|a|² as a double
+           word (wallc), which the root refinement keeps. */
         for (i = 0; i < 3; i++) {
             CYL__R ra = f->r * f->a[i], ral = CYL__FMAR(f->r, f->a[i], -ra);
             CYL__R rs = f->r * f->s[i], rsl = CYL__FMAR(f->r, f->s[i], -rs);
@@ -934,10 +934,7 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
             sd.lo += 2 * rs * (rsl + f->r * f->sl[i]);
         }
         CYL__P(acc_split)(sc, &f->R2, &f->R2l);
-        sc.hi = -sc.hi;
-        sc.lo = -sc.lo;
-        CYL__P(acc_dot_dw)(&sc, f->m, f->ml, f->m, f->ml);
-        C = sc.hi + sc.lo;
+        C = CYL__P(wallc)(f, f->R2, f->R2l);
         CYL__P(acc_prod)(&sd, -P, P); /* P² from the double word P: e to O(u²) */
         sd.lo -= 2 * P * Pl;
         D = sd.hi + sd.lo;
@@ -945,20 +942,21 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, int full, CYL__R t[2]
 #endif
     {
         /* m as a double word from the exact w + wl, P compensated, r²|a|² as a double word:
-           what the root correction in finish needs for a residual exact to O(u²) */
+           what the root correction in finish needs for a residual exact to O(u²); C from them
+           compensated (wallc), so that an origin on the surface within the roundings gets its
+           crossing near t = 0 right (fuzz finding 31; the solver is the rare path, and one
+           compensated sum is less code than a test for when it is needed) */
         CYL__R r2l = CYL__FMAR(f->r, f->r, -r2);
         /* the same m on every entry point, so that occluded and intersect classify alike */
         CYL__P(cross_dw)(f->a, f->w, f->wl, f->m, f->ml);
-        if (full) {
+        {
             CYL__R p = r2 * f->aa;
             f->R2 = p;
             f->R2l = CYL__FMAR(r2, f->aa, -p) + r2 * f->aal + r2l * f->aa;
         }
         P = CYL__P(dot2)(f->w, f->s) + (CYL__P(dot)(f->w, f->sl) + CYL__P(dot)(f->wl, f->s));
         B = CYL__P(dot)(f->m, f->s);
-        C = CYL__FMAR(-r2, f->aa, CYL__P(dot)(f->m, f->m));
-        if (CYL__P(abs)(C) <= 64 * CYL__U * (CYL__P(dot)(f->m, f->m) + r2 * f->aa))
-            C = CYL__P(wallc)(f, r2, r2l);
+        C = CYL__P(wallc)(f, f->R2, f->R2l);
         D = CYL__P(dop)(r2, f->A, P, P) + r2l * f->A;
     }
     if (f->coarse) {
@@ -1121,9 +1119,8 @@ CYL__INL int CYL__P(in_disk)(const CYL__P(frame) *f, CYL__R t)
 }
 
 /* All crossings of the chosen surface (at most 2), sorted, then those in [tmin, tmax]. */
-/* full = 0 (occluded): the classification only, without what corrects the roots. */
 CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
-                          int full, CYL__P(frame) *f, CYL__P(cand) out[2])
+                          CYL__P(frame) *f, CYL__P(cand) out[2])
 {
     CYL__P(cand) c[2];
     CYL__R sl[2], tw[2];
@@ -1167,7 +1164,7 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
                     n++;
                 }
         }
-    } else if (CYL__P(wall)(f, opts, full, tw, &tangent)) {
+    } else if (CYL__P(wall)(f, opts, tw, &tangent)) {
         unsigned tf = tangent ? CYL_F_TANGENT : 0u;
         int pos[2]; /* each wall root: -1 before the slab, 0 in it (inclusive), +1 after */
 #ifndef CYL_NO_PRECISE
@@ -2352,7 +2349,7 @@ CYL__SLOW int CYL__P(slow_intersect)(const CYL__N(ray) *ray, const CYL__N(cylind
     CYL__P(cand) c[2];
     int rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
-    if (!CYL__P(solve)(ray, cyl, opts, 1, &f, c)) return CYL_MISS;
+    if (!CYL__P(solve)(ray, cyl, opts, &f, c)) return CYL_MISS;
     CYL__P(finish)(&f, &c[0], opts, ray, hit);
     return CYL_HIT;
 }
@@ -2364,7 +2361,7 @@ CYL__SLOW int CYL__P(slow_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *c
     CYL__P(cand) c[2];
     int k, n, rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
-    n = CYL__P(solve)(ray, cyl, opts, 1, &f, c);
+    n = CYL__P(solve)(ray, cyl, opts, &f, c);
     for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, ray, &hits[k]);
     if (n == 2) CYL__P(order2)(hits);
     return n;
@@ -2377,7 +2374,7 @@ CYL__SLOW int CYL__P(slow_occluded)(const CYL__N(ray) *ray, const CYL__N(cylinde
     CYL__P(cand) c[2];
     int rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
-    return CYL__P(solve)(ray, cyl, opts, 0, &f, c) > 0;
+    return CYL__P(solve)(ray, cyl, opts, &f, c) > 0;
 }
 
 CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
