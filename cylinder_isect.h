@@ -270,7 +270,7 @@
 #define CYL__SLOW static inline
 #endif
 /* The fast path out of line under -Os too: inlined into an entry point, its frame adds to the
-   solver's (make sizes: Cortex-M4F's open tube took 776 B of stack inlined, 528 B not).
+   solver's (make sizes, Cortex-M4F's open tube: 776 B of stack, about 480 B without).
    Options still fold: gcc specialises it for constant ones (.constprop). */
 #if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE_SIZE__) && !defined(CYL_INTERNAL)
 #define CYL__FAST static __attribute__((noinline, unused))
@@ -896,9 +896,9 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
    and *tangent set. */
 /* The solver's C = |m|² − r²|a|² as one compensated sum of the double words m + ml and
    R2 + R2l = r²|a|²: CYL_PRECISE's, and the default mode's for an origin on the surface within
-   the roundings (see fc0, fuzz finding 31). Out of line, like fc0, so that its double words do
-   not stay on the solver's stack. */
-CYL__SLOW CYL__R CYL__P(wallc)(const CYL__P(frame) *f, CYL__R R2, CYL__R R2l)
+   the roundings (see fc0, fuzz finding 31). Inline: called out of line it made the precise
+   tier's hand-overs about twice as slow in time (not in instructions). */
+CYL__INL CYL__R CYL__P(wallc)(const CYL__P(frame) *f, CYL__R R2, CYL__R R2l)
 {
     CYL__P(acc) sc;
     sc.hi = -R2;
@@ -1525,9 +1525,8 @@ CYL__INL CYL__R CYL__P(fres)(const CYL__R a[3], const CYL__R d[3], const CYL__R 
 /* C = f(0) = |a × (o − c)|² − r²|a|² from the exact o − c (fres at t = 0): about u of itself
    plus u² of its terms. The plain C rounds by about u·|m|², which for an origin on the surface
    (a secondary ray) is all of it; the crossing near t = 0 then moves by about u·r²|a|²/|q|,
-   and along a ray nearly parallel to the axis that is far past a rim (fuzz finding 31). Out of
-   line: it is rare, and inlined its double words would stay on the caller's stack. */
-CYL__SLOW CYL__R CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+   and along a ray nearly parallel to the axis that is far past a rim (fuzz finding 31). */
+CYL__INL CYL__R CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                            const CYL__R a[3], const CYL__R d[3], const CYL__R s[3], CYL__R r,
                            const CYL__R lf[2])
 {
