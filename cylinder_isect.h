@@ -895,9 +895,9 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
    precise path also compensates A and P². Returns 0 (no crossing), or 1 with t[0] <= t[1]
    and *tangent set. */
 /* The solver's C = |m|² − r²|a|² as one compensated sum of the double words m + ml and
-   R2 + R2l = r²|a|²: CYL_PRECISE's, and the default mode's for an origin on the surface within
-   the roundings (see fc0, fuzz finding 31). Inline: called out of line it made the precise
-   tier's hand-overs about twice as slow in time (not in instructions). */
+   R2 + R2l = r²|a|², in both tiers (the default mode needs it for an origin on the surface
+   within the roundings: see fc0, fuzz finding 31). Inline: called out of line it made the
+   precise tier's hand-overs about twice as slow in time (not in instructions). */
 CYL__INL CYL__R CYL__P(wallc)(const CYL__P(frame) *f, CYL__R R2, CYL__R R2l)
 {
     CYL__P(acc) sc;
