@@ -429,6 +429,35 @@ CYL_DEF const char *cyl_strerror(int code)
     }
 }
 
+/* ---- double instance (first: the float API computed in double calls its exact C) ---- */
+#ifndef CYL_NO_DOUBLE
+#define CYL__BODY 1
+#define CYL__R double
+#define CYL__UINT uint64_t
+#define CYL__N(x) cyld_##x
+#define CYL__P(x) cyl__d_##x
+#define CYL__C(x) x
+#define CYL__SQRTR(x) CYL_SQRT(x)
+#define CYL__FMAR(a, b, c) CYL_FMA(a, b, c)
+#define CYL__FABSR(x) CYL__FABS(x)
+#define CYL__U (DBL_EPSILON * 0.5)
+#define CYL__MAXR DBL_MAX
+#define CYL__MINR DBL_MIN
+#define CYL__MANT 53
+#define CYL__EBIAS 1023
+#define CYL__EMASK 0x7ffu
+#define CYL__TWO_MANT 9007199254740992.0
+#define CYL__TANG CYL_TANGENT_TOL
+#define CYL__TBAND 2.8421709430404007e-14 /* 2^-45 = 2^-(53-8) */
+#define CYL__PARA CYL_PARALLEL_TOL
+#define CYL__RDIR 18446744073709551616.0
+#define CYL__RLEN 3.402823669209384634633746e38
+#define CYL__RCOARSE 1.1270725851789228e-131 /* 2^-435 */
+#define CYL__LD 1
+#define CYL__WIDE 0
+#include CYL_HEADER_FILENAME /* the body #undefs the parameters above */
+#endif
+
 /* ---- float instance ---- */
 #ifndef CYL_NO_FLOAT
 #define CYL__BODY 1
@@ -455,35 +484,6 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__RCOARSE 4.656612873077393e-10f /* 2^-31 */
 #define CYL__LD CYL_FLOAT_WIDE /* the fast path's type: double (1) or float (0) */
 #define CYL__WIDE CYL_FLOAT_WIDE
-#include CYL_HEADER_FILENAME /* the body #undefs the parameters above */
-#endif
-
-/* ---- double instance ---- */
-#ifndef CYL_NO_DOUBLE
-#define CYL__BODY 1
-#define CYL__R double
-#define CYL__UINT uint64_t
-#define CYL__N(x) cyld_##x
-#define CYL__P(x) cyl__d_##x
-#define CYL__C(x) x
-#define CYL__SQRTR(x) CYL_SQRT(x)
-#define CYL__FMAR(a, b, c) CYL_FMA(a, b, c)
-#define CYL__FABSR(x) CYL__FABS(x)
-#define CYL__U (DBL_EPSILON * 0.5)
-#define CYL__MAXR DBL_MAX
-#define CYL__MINR DBL_MIN
-#define CYL__MANT 53
-#define CYL__EBIAS 1023
-#define CYL__EMASK 0x7ffu
-#define CYL__TWO_MANT 9007199254740992.0
-#define CYL__TANG CYL_TANGENT_TOL
-#define CYL__TBAND 2.8421709430404007e-14 /* 2^-45 = 2^-(53-8) */
-#define CYL__PARA CYL_PARALLEL_TOL
-#define CYL__RDIR 18446744073709551616.0
-#define CYL__RLEN 3.402823669209384634633746e38
-#define CYL__RCOARSE 1.1270725851789228e-131 /* 2^-435 */
-#define CYL__LD 1
-#define CYL__WIDE 0
 #include CYL_HEADER_FILENAME /* the body #undefs the parameters above */
 #endif
 
@@ -756,7 +756,8 @@ CYL__INL int CYL__P(check)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
 /* Where the lean path runs (see quick), what it hands over the fast path would hand over too,
    except for CYL_PRECISE in the double API, which the fast path certifies decision by
    decision; so the fast path serves that, and every valid option set of the float API
-   computed in float. */
+   computed in float. In the float API computed in double the solver's entry points try the
+   fast path first (see there). */
 CYL__INL int CYL__P(fastok)(unsigned opts)
 {
 #if defined(CYL_NO_FAST_PATH) || (CYL__QUICK && (CYL__WIDE || defined(CYL_NO_PRECISE)))
@@ -1567,7 +1568,41 @@ CYL__INL CYL__R CYL__P(fclamp)(const CYL__N(ray) *ray, CYL__R tsc, CYL__R *t, CY
     *t = *tu / tsc;
     return CYL__P(abs)(*t * tsc - *tu);
 }
+#else
+/* The float API computed in double: C from the exact o − c by the double instance's fc0. The
+   frame's a, d and s are doubles already, and float o, c and r convert exactly; lengths are
+   not scaled in double (fscale), so lf is 1. */
+CYL__SLOW CYL__L CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                           const CYL__L a[3], const CYL__L d[3], const CYL__L s[3], CYL__L r,
+                           const CYL__R lf[2])
+{
+    const double one[2] = {1, 1};
+    cyld_ray dr = {{0, 0, 0}, {0, 0, 0}, 0, 0};
+    cyld_cylinder dc = {{0, 0, 0}, {0, 0, 0}, 0, 0};
+    int i;
+    (void)lf;
+    for (i = 0; i < 3; i++) {
+        dr.o[i] = (double)ray->o[i];
+        dc.c[i] = (double)cyl->c[i];
+    }
+    return cyl__d_fc0(&dr, &dc, a, d, s, r, one);
+}
 #endif
+
+/* Could the rounding of C (|δC| <= eC) move the root t = C/q (frame) across a rim (v|a| =
+   v = a·w + t·a·d against ±H|a|), or with ends = 1 across tmin or tmax (t·tsc)? It moves it by up
+   to eC/|q|, which for an origin near the wall grows like 1/sin of the angle to the axis: a
+   ray nearly parallel to it (fuzz findings 31, 32). At a rim that error is also multiplied by
+   r/h, so even C's rounding in double can decide a float rim there. Compared without a
+   division, with a factor 4 for the roundings of the test; infinite ends never qualify. */
+CYL__INL int CYL__P(cnear)(CYL__L t, CYL__L v, CYL__L q, CYL__L eC, CYL__L ad, CYL__L Hn,
+                          int ends, CYL__L tsc, CYL__L tmin, CYL__L tmax)
+{
+    CYL__L aq = CYL__P(labs)(q), e = 4 * eC, tu = t * tsc;
+    return CYL__P(labs)(CYL__P(labs)(v) - Hn) * aq <= e * CYL__P(labs)(ad) ||
+           (ends && (CYL__P(labs)(tu - tmin) * aq <= e * tsc ||
+                     CYL__P(labs)(tu - tmax) * aq <= e * tsc));
+}
 
 /* Componentwise bounds on the errors of s = a × d (es) and m = a × w (em, with the rounding
    of o − c), from the largest components of a, d, s (returned too) and w. */
@@ -1691,8 +1726,13 @@ CYL__INL int CYL__P(fscale)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
 
 /* want: 0 occluded (returns 1 or 0), 1 the nearest hit into hits[0], 2 every hit.
    Returns -1 (nothing written) when the solver must answer. */
-CYL__FAST int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
-                         int want, CYL__N(hit) *hits)
+#if CYL__QUICK && CYL__WIDE
+#define CYL__FASTQ CYL__SLOW /* only behind the lean path's hand-over: out of line */
+#else
+#define CYL__FASTQ CYL__FAST
+#endif
+CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                          int want, CYL__N(hit) *hits)
 {
     const CYL__L u = CYL__LU, sf = (CYL__L)1 + (CYL__L)1 / 64, tiny = CYL__LMIN;
     const CYL__L hi = CYL__LHI, lo = 1 / CYL__LHI;
@@ -1795,22 +1835,25 @@ CYL__FAST int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
                 /* roots of A t² + 2B t + C, B = m·s, C = |m|² − r²|a|², B² − AC = |a|²D */
                 B = CYL__P(ldot)(m, s);
                 C = MM - R2;
-#if !CYL__WIDE
-                if (CYL__P(labs)(C) <= 64 * u * (MM + R2)) {
-                    /* an origin on the surface within the roundings (a secondary ray): C from
-                       the exact o − c (fc0), so that the crossing near t = 0 is known to about
-                       u of itself for the rim and, in CYL_PRECISE, against tmin = 0 without
-                       the solver */
-                    C = CYL__P(fc0)(ray, cyl, a, d, s, r, lf);
-                    cx = 1;
-                }
-#endif
                 Dp = D > 0 ? D : 0;
                 sq = CYL__LSQRT(aa * Dp);
                 q = -(B + (B < 0 ? -sq : sq));
                 if (!(CYL__P(labs)(q) >= tiny)) return -1; /* a contact where B = D = 0 */
                 ta = q / A;
                 tb = C / q;
+                if (CYL__P(labs)(C) <= 64 * u * (MM + R2) ||
+                    CYL__P(cnear)(tb, CYL__LMADD(tb, ad, aw), q, 16 * u * (3 * aa * mw * mw + R2),
+                                  ad, hfin ? Hn : (CYL__L)CYL__LMAX * 2, 1, tsc,
+                                  (CYL__L)ray->tmin, (CYL__L)ray->tmax)) {
+                    /* an origin on the surface within the roundings (a secondary ray), or a
+                       root C/q that C's rounding could move across a rim or an end of the t
+                       range: C from the exact o − c (fc0), so that the crossing near t = 0 is
+                       known to about u of itself for the rim and, in CYL_PRECISE, against
+                       tmin = 0 without the solver */
+                    C = CYL__P(fc0)(ray, cyl, a, d, s, r, lf);
+                    cx = 1;
+                    tb = C / q;
+                }
                 swap = ta > tb;
                 tw[0] = swap ? tb : ta;
                 tw[1] = swap ? ta : tb;
@@ -2262,25 +2305,42 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         if (tf && (opts & CYL_NO_TANGENT)) return 0;
         B = CYL__P(ldot)(f.m, f.s);
         C = MM - f.R2;
-#if !CYL__WIDE
-        /* an origin on the surface within the roundings: C from the exact o − c (fc0) */
-        if (CYL__P(labs)(C) <= 64 * (CYL__L)CYL__LU * (MM + f.R2))
-            C = CYL__P(fc0)(ray, cyl, f.a, f.d, f.s, r, f.lf);
-#endif
         f.sq = sq = CYL__LSQRT(f.aa * (D > 0 ? D : 0));
         q = -(B + (B < 0 ? -sq : sq));
         if (!(CYL__P(labs)(q) >= CYL__LMIN)) return -1;
         t0 = q / f.A;
         t1 = C / q;
-        if (t0 > t1) {
-            CYL__L x = t0;
-            t0 = t1;
-            t1 = x;
-        }
         /* the roots against the slab between the cap planes, v|a| = a·w + t·a·d against
            ±H|a| (+inf for the infinite tube) */
         v0 = CYL__LMADD(t0, f.ad, f.aw);
         v1 = CYL__LMADD(t1, f.ad, f.aw);
+#if CYL__WIDE
+        /* a root C/q that C's rounding could move across a rim (cnear): the fast path forms C
+           from the exact o − c (out of line: a call here would cost every call its spills).
+           Against tmin and tmax C/q errs by at most about 8u/sin of r/|d| (u of double), far
+           inside float's t-range band, so surface origins need nothing. */
+        if (CYL__P(cnear)(t1, v1, q, 16 * (CYL__L)CYL__LU * (f.aa * ww + f.R2), f.ad, f.Hn, 0,
+                          f.tsc, tmin, tmax))
+            return -1;
+#else
+        /* an origin on the surface within the roundings, or a root C/q that C's rounding could
+           move across a rim or an end of the t range (cnear): C from the exact o − c */
+        if (CYL__P(labs)(C) <= 64 * (CYL__L)CYL__LU * (MM + f.R2) ||
+            CYL__P(cnear)(t1, v1, q, 16 * (CYL__L)CYL__LU * (f.aa * ww + f.R2), f.ad, f.Hn, 1,
+                          f.tsc, tmin, tmax)) {
+            C = CYL__P(fc0)(ray, cyl, f.a, f.d, f.s, r, f.lf);
+            t1 = C / q;
+            v1 = CYL__LMADD(t1, f.ad, f.aw);
+        }
+#endif
+        if (t0 > t1) {
+            CYL__L x = t0;
+            t0 = t1;
+            t1 = x;
+            x = v0;
+            v0 = v1;
+            v1 = x;
+        }
         sg0 = (v0 > f.Hn) - (v0 < -f.Hn);
         sg1 = (v1 > f.Hn) - (v1 < -f.Hn);
         in0 = caps || !sg0;
@@ -2339,6 +2399,21 @@ CYL__INL int CYL__P(quickok)(unsigned opts)
 }
 #endif
 
+/* In the float API computed in double, what the lean path hands over goes to the fast path
+   first, then to the solver: the fast path computes in double too, certifies CYL_PRECISE's
+   decisions one by one (so it covers origins beyond the lean path's 2^28 radii and half
+   heights) and forms C from the exact o − c in double where its rounding could decide a rim
+   (fuzz finding 32: float's compensated solver carries about 2^-48 of |m|², which a ray nearly
+   parallel to the axis of a flat disk amplifies by r/(h·sin) past any rim margin). */
+CYL__INL int CYL__P(wideok)(void)
+{
+#if CYL__QUICK && CYL__WIDE
+    return 1;
+#else
+    return 0;
+#endif
+}
+
 /* The solver's entry points stay out of line: the fast path answers nearly every call, and
    a small public function inlines into the caller's loop, where the options fold. */
 CYL__SLOW int CYL__P(slow_intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
@@ -2348,6 +2423,7 @@ CYL__SLOW int CYL__P(slow_intersect)(const CYL__N(ray) *ray, const CYL__N(cylind
     CYL__P(cand) c[2];
     int rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
+    if (CYL__P(wideok)() && (rc = CYL__P(fast)(ray, cyl, opts, 1, hit)) >= 0) return rc;
     if (!CYL__P(solve)(ray, cyl, opts, &f, c)) return CYL_MISS;
     CYL__P(finish)(&f, &c[0], opts, ray, hit);
     return CYL_HIT;
@@ -2360,6 +2436,7 @@ CYL__SLOW int CYL__P(slow_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *c
     CYL__P(cand) c[2];
     int k, n, rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
+    if (CYL__P(wideok)() && (n = CYL__P(fast)(ray, cyl, opts, 2, hits)) >= 0) return n;
     n = CYL__P(solve)(ray, cyl, opts, &f, c);
     for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, ray, &hits[k]);
     if (n == 2) CYL__P(order2)(hits);
@@ -2371,8 +2448,10 @@ CYL__SLOW int CYL__P(slow_occluded)(const CYL__N(ray) *ray, const CYL__N(cylinde
 {
     CYL__P(frame) f;
     CYL__P(cand) c[2];
+    CYL__N(hit) unused; /* want = 0: the fast path writes no hit */
     int rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
+    if (CYL__P(wideok)() && (rc = CYL__P(fast)(ray, cyl, opts, 0, &unused)) >= 0) return rc;
     return CYL__P(solve)(ray, cyl, opts, &f, c) > 0;
 }
 
@@ -2475,5 +2554,6 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__QUICK
 #undef CYL__WIDE
 #undef CYL__LD
+#undef CYL__FASTQ
 
 #endif /* CYL__BODY */

@@ -81,7 +81,16 @@ static void test_sqrt_and_fma_overrides_are_called(void)
 #else
     TEST_ASSERT_TRUE_MESSAGE(n_sqrtf > 0, "CYL_SQRTF used by cylf_intersect");
 #endif
+    n_sqrt = 0;
     TEST_ASSERT_EQUAL_INT(CYL_HIT, cylf_intersect(&rf, &cf, CYL_PRECISE, &hf));
+#if CYL_FLOAT_WIDE /* the precise tier's fast path computes in double too */
+    TEST_ASSERT_TRUE_MESSAGE(n_sqrt > 0, "CYL_SQRT used by cylf_intersect's precise tier");
+    {
+        /* a tangent contact (e = 0): the precise tier hands it to the solver, in float */
+        cylf_ray rt = ray_f(1, 1, 0);
+        TEST_ASSERT_EQUAL_INT(CYL_HIT, cylf_intersect(&rt, &cf, CYL_PRECISE, &hf));
+    }
+#endif
     TEST_ASSERT_TRUE_MESSAGE(n_sqrtf > 0, "CYL_SQRTF used by cylf_intersect's precise tier");
     TEST_ASSERT_EQUAL_INT(CYL_HIT, cyld_intersect(&rd, &cd, CYL_PRECISE, &hd));
     TEST_ASSERT_TRUE_MESSAGE(n_fmaf > 0, "CYL_FMAF used (default or precise path)");
