@@ -1780,8 +1780,13 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     {
         /* Hand over what the plain roundings cannot resolve: o − c beyond 2^30 (double) or
            2^12 (float) radii or half heights, where its rounding alone is 2^-23 (2^-12) of e or
-           of the rim margin; and an h/2 that rounds (h subnormal in the frame). */
-        const CYL__L far = CYL__LD ? (CYL__L)1073741824.0 : (CYL__L)4096.0;
+           of the rim margin; and an h/2 that rounds (h subnormal in the frame). The float API
+           computed in double certifies (CYL_PRECISE, and every hand-over of the lean path)
+           up to 2^40, where the first-order error bounds still hold with room (2^-10 of the
+           quantities they bound): the float solver's double words would do worse there. */
+        const CYL__L far = CYL__LD ? (CYL__WIDE && ce ? (CYL__L)1099511627776.0 /* 2^40 */
+                                                      : (CYL__L)1073741824.0)  /* 2^30 */
+                                   : (CYL__L)4096.0;
         CYL__L hh = H;
         mw = CYL__P(lmax3)(w);
         H = hh * (CYL__L)0.5;
@@ -2400,11 +2405,12 @@ CYL__INL int CYL__P(quickok)(unsigned opts)
 #endif
 
 /* In the float API computed in double, what the lean path hands over goes to the fast path
-   first, then to the solver: the fast path computes in double too, certifies CYL_PRECISE's
-   decisions one by one (so it covers origins beyond the lean path's 2^28 radii and half
-   heights) and forms C from the exact o − c in double where its rounding could decide a rim
-   (fuzz finding 32: float's compensated solver carries about 2^-48 of |m|², which a ray nearly
-   parallel to the axis of a flat disk amplifies by r/(h·sin) past any rim margin). */
+   first, then to the solver: the fast path computes in double too, certifies every decision
+   (as for CYL_PRECISE, whatever the options: a hand-over is rare, and an uncertain decision
+   still goes to the solver), up to 2^40 radii and half heights, and forms C from the exact
+   o − c in double where its rounding could decide a rim (fuzz finding 32: float's compensated
+   solver carries about 2^-48 of |m|², which a ray nearly parallel to the axis of a flat disk
+   amplifies by r/(h·sin) past any rim margin). */
 CYL__INL int CYL__P(wideok)(void)
 {
 #if CYL__QUICK && CYL__WIDE
@@ -2423,7 +2429,8 @@ CYL__SLOW int CYL__P(slow_intersect)(const CYL__N(ray) *ray, const CYL__N(cylind
     CYL__P(cand) c[2];
     int rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
-    if (CYL__P(wideok)() && (rc = CYL__P(fast)(ray, cyl, opts, 1, hit)) >= 0) return rc;
+    if (CYL__P(wideok)() && (rc = CYL__P(fast)(ray, cyl, opts | CYL_PRECISE, 1, hit)) >= 0)
+        return rc;
     if (!CYL__P(solve)(ray, cyl, opts, &f, c)) return CYL_MISS;
     CYL__P(finish)(&f, &c[0], opts, ray, hit);
     return CYL_HIT;
@@ -2436,7 +2443,8 @@ CYL__SLOW int CYL__P(slow_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *c
     CYL__P(cand) c[2];
     int k, n, rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
-    if (CYL__P(wideok)() && (n = CYL__P(fast)(ray, cyl, opts, 2, hits)) >= 0) return n;
+    if (CYL__P(wideok)() && (n = CYL__P(fast)(ray, cyl, opts | CYL_PRECISE, 2, hits)) >= 0)
+        return n;
     n = CYL__P(solve)(ray, cyl, opts, &f, c);
     for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, ray, &hits[k]);
     if (n == 2) CYL__P(order2)(hits);
@@ -2451,7 +2459,8 @@ CYL__SLOW int CYL__P(slow_occluded)(const CYL__N(ray) *ray, const CYL__N(cylinde
     CYL__N(hit) unused; /* want = 0: the fast path writes no hit */
     int rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
-    if (CYL__P(wideok)() && (rc = CYL__P(fast)(ray, cyl, opts, 0, &unused)) >= 0) return rc;
+    if (CYL__P(wideok)() && (rc = CYL__P(fast)(ray, cyl, opts | CYL_PRECISE, 0, &unused)) >= 0)
+        return rc;
     return CYL__P(solve)(ray, cyl, opts, &f, c) > 0;
 }
 

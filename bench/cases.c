@@ -5,7 +5,8 @@
 #include <string.h>
 
 static const char *const family_names[BF_COUNT] = {
-    "well", "far", "parallel", "grazing", "thin", "surface", "huge", "tiny", "axis", "trange"
+    "well", "far", "parallel", "grazing", "thin", "surface", "huge", "tiny", "axis", "trange",
+    "flat"
 };
 
 const char *bench_family_name(int family)
@@ -312,6 +313,41 @@ void bench_case_gen(int family, int prec, uint64_t seed, uint64_t index, bench_c
             if (IRAND(s, 2)) k->tmax = t0 * (1 + rel);
             else k->tmin = t0 * (1 + rel);
         }
+        break;
+    }
+    case BF_FLAT: {
+        /* axis along a coordinate axis, c on it: the origin o = c + v0 a/|a| ± r e_j + δ e_l
+           (e_j, e_l the other two axes, δ = ±r 2^-k) is exactly representable, so C =
+           δ²|a|² is far below its rounding in the API's type (2^-2k of r²|a|²; k up to 40 for
+           float, 60 for double). v0 within 1.2 half heights, or at 1e-8 .. 1e-1 of one from a
+           rim. The ray
+           runs along ±a with a small radial and tangential part: the crossing near t = 0 is
+           decided against the rim from |v0 + t·â·d|, t = C/q */
+        static const double lens[4] = {1.0, 2.0, 0.5, 3.0};
+        double th = LOG10U(s, prec == 24 ? -7.2 : -15.9, -1), dl = U(s, 0.3, 3.0), v0, ps, sgn;
+        int ax = IRAND(s, 3), j = (ax + 1 + IRAND(s, 2)) % 3, l = 3 - ax - j;
+        int kexp = 12 + IRAND(s, prec == 24 ? 29 : 49);
+        for (i = 0; i < 3; ++i) k->a[i] = k->c[i] = 0;
+        sgn = IRAND(s, 2) ? 1.0 : -1.0;
+        k->a[ax] = sgn * lens[IRAND(s, 4)];
+        k->c[ax] = U(s, -10, 10);
+        k->r = U(s, 0.5, 2.0);
+        if (prec == 24) k->r = to_f(k->r);
+        k->h = k->r / LOG10U(s, 2, 9);
+        if (prec == 24) k->h = to_f(k->h);
+        v0 = (IRAND(s, 2) ? U(s, -1.2, 1.2)
+                          : (IRAND(s, 2) ? 1.0 : -1.0) *
+                                (1.0 + (IRAND(s, 2) ? 1.0 : -1.0) * LOG10U(s, -8, -1))) *
+             k->h / 2;
+        k->o[ax] = k->c[ax] + v0;
+        k->o[j] = IRAND(s, 2) ? k->r : -k->r;
+        k->o[l] = (IRAND(s, 2) ? 1.0 : -1.0) * ldexp(k->r, -kexp);
+        ps = U(s, 0, 6.283185307179586);
+        k->d[ax] = (IRAND(s, 2) ? 1.0 : -1.0) * cos(th) * dl;
+        k->d[j] = sin(th) * cos(ps) * dl;
+        k->d[l] = sin(th) * sin(ps) * dl;
+        k->tmin = IRAND(s, 4) == 0 ? -(double)INFINITY : 0.0;
+        k->tmax = (double)INFINITY;
         break;
     }
     }

@@ -22,6 +22,10 @@ enum bench_family {
     BF_TINY,       /* a well case scaled by 2^-50 (float) / 2^-400 (double) */
     BF_AXIS,       /* axis-aligned exact cases: small integers, exact tangencies and rims */
     BF_TRANGE,     /* tmin or tmax within a relative 10^-k (k = 1..15) of a hit */
+    BF_FLAT,       /* flat disks (r/h 1e2 .. 1e9), origin exactly on the wall near a rim but
+                      for 2^-12 .. 2^-40 (2^-60) r, ray nearly parallel to the axis (1e-1 ..
+                      6e-8 float, 1.3e-16 double): the rim decision amplifies C's rounding by
+                      about r/(h sin) (fuzz finding 32) */
     BF_COUNT
 };
 

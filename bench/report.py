@@ -18,7 +18,7 @@ import datetime
 
 GROUPS = {
     "benign": ["well", "axis", "huge", "tiny", "surface", "trange"],
-    "stiff": ["far", "parallel", "grazing", "thin"],
+    "stiff": ["far", "parallel", "grazing", "thin", "flat"],
 }
 HEADLINE = ["lib", "lib+PRECISE", "lib+NO_ERRBOUND+NO_NORMAL", "literal", "quilez"]
 ERR_FLOOR = 0.01          # ulps plotted in place of an error of exactly 0

@@ -369,6 +369,62 @@ static void test_double_surface_origin_parallel_ray_rim(void)
   }
 }
 
+/* Finding 32 (fixed by cb6c497; found by a targeted search, not by the fuzzers, whose
+ * classification check exempts rays this close to the parallel tolerance; now
+ * the benchmark's flat family). Float API computed in double: flat disks (r/h ~ 1e8) and an
+ * origin on the wall, a ray nearly parallel to the axis (sin ~ 6e-8). The root near t = 0,
+ * t = C/q, moves by |dC|/|q|, about u r/sin, and at a rim that is r/h times more in units of
+ * h: double's rounding of C decided the rim (first case: a hit at t = 0 on a tube the exact
+ * answer misses, rim margin 4.2e-4), and so did the float solver's double words in
+ * CYL_PRECISE for origins beyond the lean path's 2^28 half heights (second case: a miss for
+ * the exact hit at t = 1.6551465305813404e-14, third: a hit at t = 0 with t_err = 2^26 for a
+ * miss, margin 0.00995). Exact answers (ref/), open tube. */
+static void flat_disk_case(const cylf_ray *ray, const cylf_cylinder *cyl, double t_exact)
+{
+  unsigned opts[] = {0u, CYL_PRECISE, CYL_NO_NORMAL | CYL_OUTWARD, CYL_PRECISE | CYL_TRUSTED};
+  size_t i;
+  for (i = 0; i < sizeof opts / sizeof opts[0]; i++) {
+    cylf_hit h[2];
+    int want = !isnan(t_exact); /* NaN: the exact answer is a miss */
+    memset(h, 0, sizeof h);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(want, cylf_occluded(ray, cyl, opts[i]), "occluded");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(want ? CYL_HIT : CYL_MISS, cylf_intersect(ray, cyl, opts[i], h),
+                                  "intersect");
+    if (want) {
+      TEST_ASSERT_EQUAL_INT_MESSAGE(CYL_SIDE, h[0].part, "part");
+      TEST_ASSERT_TRUE_MESSAGE(fabs((double)h[0].t - t_exact) <= (double)h[0].t_err, "t_err");
+    }
+    TEST_ASSERT_EQUAL_INT_MESSAGE(want, cylf_intersect_all(ray, cyl, opts[i], h), "intersect_all");
+  }
+}
+
+static void test_float_flat_disk_surface_origin_parallel_rim(void)
+{
+  cylf_ray ray = {{-0x1.e9932cp-20f, -0x1.152a08p-24f, -0x1p+7f},
+                  {0x1p+0f, -0x1.ebc9dap-25f, -0x1.55e0d4p-26f}, 0, 0x1.0ae8fap+18f};
+  cylf_cylinder cyl = {{0, 0, 0}, {0x1p+0f, 0, 0}, 0x1p+7f, 0x1.e9971ep-19f};
+  flat_disk_case(&ray, &cyl, (double)NAN);
+}
+
+static void test_float_precise_flat_disk_rim_beyond_lean_range(void)
+{
+  cylf_ray ray = {{0x1.21e422p-9f, 0x1.4016f6p-38f, 0x1.f596bcp-38f},
+                  {-0x1.2f741ap-22f, 0x1.2ebcb6p-20f, -0x1.377328p+4f}, -0x1.656596p+7f,
+                  0x1.d41e2ep-15f};
+  cylf_cylinder cyl = {{0, -0.0f, 0}, {0, 0, 0x1.869a24p-1f}, 0x1.21e422p-9f, 0x1.f596bap-37f};
+  flat_disk_case(&ray, &cyl, 1.6551465305813404e-14);
+}
+
+static void test_float_precise_flat_disk_solver_spurious_hit(void)
+{
+  cylf_ray ray = {{0x1.febe44p+14f, -0x1.8e4p+12f, 0x1.0bb804p+13f},
+                  {0x1.2e3bf4p-32f, -0x1.4d605ep-5f, 0x1.78d51p-29f}, -(float)INFINITY,
+                  (float)INFINITY};
+  cylf_cylinder cyl = {{-0x1.43fp+12f, -0x1.8e4p+12f, 0x1.0bb8p+13f}, {0, 0x1.218046p+8f, 0},
+                       0x1.27dd22p+15f, 0x1.d04686p-14f};
+  flat_disk_case(&ray, &cyl, (double)NAN);
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -405,5 +461,8 @@ int main(void)
   RUN_TEST(test_double_huge_radius_tiny_axis_overflow);
   RUN_TEST(test_order2_widening_rounds_up);
   RUN_TEST(test_double_surface_origin_parallel_ray_rim);
+  RUN_TEST(test_float_flat_disk_surface_origin_parallel_rim);
+  RUN_TEST(test_float_precise_flat_disk_rim_beyond_lean_range);
+  RUN_TEST(test_float_precise_flat_disk_solver_spurious_hit);
   return UNITY_END();
 }
