@@ -103,7 +103,10 @@
    float) the crossing is then corrected from double words: a wall root by the exact-quadratic
    step of note 4, a cap crossing as in note 5; so t is about an ulp in both APIs. For an
    origin on the surface within the roundings (a secondary ray) C = f(0) is formed from the
-   exact o − c first, so the crossing near t = 0 is decided from an accurate value. Its
+   exact o − c first, so the crossing near t = 0 is decided from an accurate value; so it is
+   wherever the rounding of C could move the root C/q across a rim (or, in the double API, an
+   end of the t range): that root moves by about u·r/sin of the angle to the axis, and a flat
+   disk (h far below r) multiplies that by r/h in units of its rim margin. Its
    decisions (tangency, rim, tmin/tmax) carry the plain roundings: within a few ulps of a
    threshold they can go either way, and farther for origins far from the axis (the rounding
    of o − c is about u·|o − c|/r of e). t_err is rigorous on every path (note 8). Inputs
@@ -111,7 +114,10 @@
    The compensated solver of notes 1-7 answers alone for invalid input, degenerate cases, an
    h/2 that rounds, and origins farther than 2^30 radii or half heights (2^12 when the fast
    path computes in float), where the rounding of o − c alone would be 2^-23 (2^-12) of e or
-   of the rim margin.
+   of the rim margin. In the float API computed in double, whatever the lean path hands over
+   first goes to the fast path in double with CYL_PRECISE's certification (below), up to 2^40
+   radii and half heights, and only what that cannot certify to the solver, whose float double
+   words (about 2^-48) would decide less.
    CYL_PRECISE starts on the fast path too, but certifies every decision: each is taken only
    where the computed value is farther from its threshold than an a-priori bound on its error
    (the parallel test, D against the tangent band, each root against the rims, each crossing
@@ -124,7 +130,9 @@
    t ≈ 0 crossing of a secondary ray (an origin on the surface, tmin = 0) without the solver
    wherever its bound is that small. For the float API computed in double with a hardware FMA the
    bound is global (and the lean path serves it): |o − c| below 2^28 r and 2^28 h/2 keeps
-   double's roundings under 2^-20 of every margin, inside float's band of 2^-16.
+   double's roundings under 2^-20 of every margin, inside float's band of 2^-16, except for
+   the rim of the root C/q, which the lean path tests (see above) and hands over where C's
+   rounding could decide it; farther origins go to the fast path's certification.
 
    CONFIGURATION (define before including)
    =============
@@ -196,7 +204,7 @@
         uses the same argument with norm-wise terms (1-norms for the 2-norms, no square root):
         |δm| <= 4u|a||w|, |δs| <= u|s| for float inputs (exact products), 2u|s| with Kahan's,
         else 3u|a||d|.
-   Measured against the exact MPFR reference of ref/ on ten case families, 6000 cases each
+   Measured against the exact MPFR reference of ref/ on eleven case families, 6000 cases each
    with and without caps (`make report`, seed 20261122, x86-64 with FMA; bench/REPORT.md has
    every family; `make test` asserts the targets on a fixed-seed sample): t_err contained the
    exact t in all 481,348 float and 498,511 double hits of every variant; default path: no misclassification
@@ -211,7 +219,12 @@
    in the frame: the wall test then compares distances linearly, may misjudge rays within the
    rounding of o − c of the axis, and reports t_err = +inf; when h/2 exceeds |o − c| and r by
    more than 2^123 (float) or 2^1019 (double), the cap planes are computed at a coarser scale
-   of their own and cap hits carry t_err = +inf.
+   of their own and cap hits carry t_err = +inf. Flat disks in float-only builds
+   (CYL_FLOAT_WIDE = 0): for an origin on the wall and a ray nearly parallel to the axis the
+   crossing near t = 0 is decided against the rim with an error of about 2^-46·r/(h·sin) of
+   the rim margin (float double words), so past r/(h·sin) of about 2^30 the rim can go either
+   way on every path, CYL_PRECISE included (the bench's flat family finds such cases in a
+   float-only build); where double is hardware it is certified.
    Conditioning: near tangency a relative input change ε moves t by about √ε·r/(|d|·sin);
    on the default path the rounding of D (about u·|o − c|/r relative to e) decides hit or
    miss for origins beyond about 1/(256u) radii; CYL_PRECISE removes that term.

@@ -369,9 +369,9 @@ static void test_double_surface_origin_parallel_ray_rim(void)
   }
 }
 
-/* Finding 32 (fixed by cb6c497; found by a targeted search, not by the fuzzers, whose
- * classification check exempts rays this close to the parallel tolerance; now
- * the benchmark's flat family). Float API computed in double: flat disks (r/h ~ 1e8) and an
+/* Finding 32 (fixed by cb6c497 and 6562fbd; found by a targeted search, not by the fuzzers,
+ * whose reference comparison exempts rays this close to the parallel tolerance; now the
+ * benchmark's flat family). Float API computed in double: flat disks (r/h ~ 1e8) and an
  * origin on the wall, a ray nearly parallel to the axis (sin ~ 6e-8). The root near t = 0,
  * t = C/q, moves by |dC|/|q|, about u r/sin, and at a rim that is r/h times more in units of
  * h: double's rounding of C decided the rim (first case: a hit at t = 0 on a tube the exact
