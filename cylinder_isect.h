@@ -116,8 +116,10 @@
    path computes in float), where the rounding of o − c alone would be 2^-23 (2^-12) of e or
    of the rim margin. In the float API computed in double, whatever the lean path hands over
    first goes to the fast path in double with CYL_PRECISE's certification (below), up to 2^40
-   radii and half heights, and only what that cannot certify to the solver, whose float double
-   words (about 2^-48) would decide less.
+   radii and half heights, and what that cannot certify to the double API's solver, run on the
+   float inputs with the float tolerances: no decision of the float API is then taken in float
+   arithmetic (float's double words, about 2^-48, are what a flat disk defeats, see Extreme
+   ratios).
    CYL_PRECISE starts on the fast path too, but certifies every decision: each is taken only
    where the computed value is farther from its threshold than an a-priori bound on its error
    (the parallel test, D against the tangent band, each root against the rims, each crossing
@@ -151,9 +153,9 @@
                            clang), else sqrt[f]          only when a non-builtin default is used
      CYL_FMAF, CYL_FMA     __builtin_fma[f], else fma[f] fused multiply-add; must be correctly
                                                         rounded (a real FMA or libm's)
-     CYL_FLOAT_WIDE        1 where double is hardware   the float API's fast path computes in
-                           (x86-64, AArch64, ARM with   double; 0: in float (always so with
-                           VFP-D, RV64D, s390x, ppc64)  CYL_NO_DOUBLE)
+     CYL_FLOAT_WIDE        1 where double is hardware   the float API computes in double (its
+                           (x86-64, AArch64, ARM with   solver is the double API's); 0: in
+                           VFP-D, RV64D, s390x, ppc64)  float (always so with CYL_NO_DOUBLE)
      CYL_TANGENT_TOLF      2^-16 = 2^-(24-8)            tangent band on e = 1 − ρ²/r²
      CYL_TANGENT_TOL       2^-45 = 2^-(53-8)
      CYL_PARALLEL_TOLF     2^-24 = u (float)            parallel bound on sin(angle)
@@ -215,9 +217,10 @@
    66 / 77 ns for the literal one (a shared machine: compare within one run); those two
    misclassify 18,787 / 14,463 and 17,748 / 9,238 cases beyond the band. Without t_err and
    the normal the float path takes 78 ns; `make insn` counts the instructions per call.
-   Extreme ratios: when r is below 2^-31 (float) or 2^-435 (double) of |o − c|, r² underflows
-   in the frame: the wall test then compares distances linearly, may misjudge rays within the
-   rounding of o − c of the axis, and reports t_err = +inf; when h/2 exceeds |o − c| and r by
+   Extreme ratios: when r is below 2^-31 (float computed in float) or 2^-435 (double, and so
+   out of reach of float inputs computed in double) of |o − c|, r² underflows in the frame:
+   the wall test then compares distances linearly, may misjudge rays within the rounding of
+   o − c of the axis, and reports t_err = +inf; when h/2 exceeds |o − c| and r by
    more than 2^123 (float) or 2^1019 (double), the cap planes are computed at a coarser scale
    of their own and cap hits carry t_err = +inf. Flat disks in float-only builds
    (CYL_FLOAT_WIDE = 0): for an origin on the wall and a ray nearly parallel to the axis the
@@ -805,6 +808,8 @@ typedef struct CYL__P(frame) {
     int e;                /* user t = frame t · 2^e                                        */
     int el;               /* user length = frame length · 2^el                             */
     int precise;
+    CYL__R tang, para;    /* the tangent band and parallel tolerance (the float API's where
+                             the double solver answers for it, see wsolve)                 */
 } CYL__P(frame);
 
 /* One crossing found by the solver, before the t range and the output. */
@@ -980,7 +985,7 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2],
         if (CYL__P(abs)(P) > rs) return 0;
         x = rs > 0 ? CYL__P(abs)(P) / rs : 0;
         e = (1 - x) * (1 + x);
-        *tangent = e <= CYL__TANG;
+        *tangent = e <= f->tang;
         if (*tangent && (opts & CYL_NO_TANGENT)) return 0;
         hc = f->r * CYL__SQRTR(e) * f->na / ns;
         tc = -B / f->A;
@@ -991,7 +996,7 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2],
         (void)D;
         return 1;
     }
-    band = CYL__TANG * r2 * f->A;
+    band = f->tang * r2 * f->A;
     if (D < -band) return 0;
     *tangent = D <= band;
     if (*tangent && (opts & CYL_NO_TANGENT)) return 0;
@@ -1132,15 +1137,19 @@ CYL__INL int CYL__P(in_disk)(const CYL__P(frame) *f, CYL__R t)
     return CYL__P(dot)(y, y) <= f->R2;
 }
 
-/* All crossings of the chosen surface (at most 2), sorted, then those in [tmin, tmax]. */
-CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
-                          CYL__P(frame) *f, CYL__P(cand) out[2])
+/* All crossings of the chosen surface (at most 2), sorted, then those in [tmin, tmax]; with
+   the tangent band tang and the parallel tolerance para (this instance's, or the float API's
+   where this double solver answers for it: wsolve). */
+CYL__INL int CYL__P(solvet)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                           CYL__R tang, CYL__R para, CYL__P(frame) *f, CYL__P(cand) out[2])
 {
     CYL__P(cand) c[2];
     CYL__R sl[2], tw[2];
     int sp[2], n = 0, k, kept = 0, tangent = 0;
     int caps = (opts & CYL_CAPS) != 0;
     CYL__P(prepare)(ray, cyl, opts, f);
+    f->tang = tang;
+    f->para = para;
     {
         /* s = a × d as a double word on every path: its low part makes P = w·s and the
            residual of the root correction exact to O(u²) */
@@ -1168,7 +1177,7 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     for (k = 0; k < 3; k++) f->m[k] = f->ml[k] = 0; /* set by the wall; zero for -O3's sake */
     if (!CYL__P(slab)(f, sl, sp)) return 0;
     /* sin²(angle) = A / (|a|²|d|²) */
-    if (f->A <= CYL__PARA * CYL__PARA * f->aa * CYL__P(dot)(f->d, f->d)) {
+    if (f->A <= f->para * f->para * f->aa * CYL__P(dot)(f->d, f->d)) {
         if (caps && f->H <= CYL__MAXR) {
             for (k = 0; k < 2; k++)
                 if (CYL__P(in_disk)(f, sl[k])) {
@@ -1231,6 +1240,12 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         }
     }
     return kept;
+}
+
+CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                          CYL__P(frame) *f, CYL__P(cand) out[2])
+{
+    return CYL__P(solvet)(ray, cyl, opts, CYL__TANG, CYL__PARA, f, out);
 }
 
 /* ------------------------------------------------------------------ the output */
@@ -2417,24 +2432,86 @@ CYL__INL int CYL__P(quickok)(unsigned opts)
 }
 #endif
 
-/* In the float API computed in double, what the lean path hands over goes to the fast path
-   first, then to the solver: the fast path computes in double too, certifies every decision
-   (as for CYL_PRECISE, whatever the options: a hand-over is rare, and an uncertain decision
-   still goes to the solver), up to 2^40 radii and half heights, and forms C from the exact
-   o − c in double where its rounding could decide a rim (fuzz finding 32: float's compensated
-   solver carries about 2^-48 of |m|², which a ray nearly parallel to the axis of a flat disk
-   amplifies by r/(h·sin) past any rim margin). */
-CYL__INL int CYL__P(wideok)(void)
-{
 #if CYL__QUICK && CYL__WIDE
-    return 1;
-#else
-    return 0;
-#endif
+/* The float API computed in double: what the lean path hands over goes to the fast path in
+   double first, with CYL_PRECISE's certification whatever the options (a hand-over is rare,
+   and an uncertain decision goes on), up to 2^40 radii and half heights; C there comes from
+   the exact o − c in double where its rounding could decide a rim. What it cannot certify,
+   the double instance's solver answers, with the float API's tangent band and parallel
+   tolerance, on the float inputs (exact in double), and its hits are rounded to float (t_err
+   rounded up; a t beyond float's range is a miss, a v beyond it saturates). Float's own
+   solver would decide with double words of float (about 2^-48), which a ray nearly parallel
+   to the axis of a flat disk amplifies by r/(h·sin) past any rim margin (fuzz finding 32). */
+CYL__SLOW int CYL__P(wsolve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                             unsigned opts, int want, CYL__N(hit) *hits)
+{
+    cyld_ray dr;
+    cyld_cylinder dc;
+    cyl__d_frame f;
+    cyl__d_cand c[2];
+    cyld_hit dh[2];
+    CYL__R Hu = cyl->h * CYL__C(0.5);
+    int i, k, n, kept = 0, sel[2] = {0, 0};
+    n = CYL__P(fast)(ray, cyl, opts | CYL_PRECISE, want, hits);
+    if (n >= 0) return n;
+    for (i = 0; i < 3; i++) {
+        dr.o[i] = (double)ray->o[i];
+        dr.d[i] = (double)ray->d[i];
+        dc.c[i] = (double)cyl->c[i];
+        dc.a[i] = (double)cyl->a[i];
+    }
+    dr.tmin = (double)ray->tmin;
+    dr.tmax = (double)ray->tmax;
+    dc.r = (double)cyl->r;
+    dc.h = (double)cyl->h;
+    n = cyl__d_solvet(&dr, &dc, opts, (double)CYL__TANG, (double)CYL__PARA, &f, c);
+    for (k = 0; k < n && kept < (want < 2 ? 1 : 2); k++)
+        if (CYL__P(labs)(c[k].tu) <= (CYL__L)CYL__MAXR) sel[kept++] = k;
+    if (want == 0 || !kept) return kept > 0;
+    for (k = 0; k < kept; k++) cyl__d_finish(&f, &c[sel[k]], opts, &dr, &dh[k]);
+    if (kept == 2) cyl__d_order2(dh);
+    if (Hu + Hu > cyl->h) Hu = (cyl->h - CYL__MINR * 2 * CYL__U) * CYL__C(0.5);
+    for (k = 0; k < kept; k++) {
+        CYL__N(hit) *o = &hits[k];
+        double v = dh[k].v;
+        o->t = (CYL__R)dh[k].t;
+        o->t_err = CYL__P(errup)(dh[k].t_err, dh[k].t, o->t);
+        for (i = 0; i < 3; i++) o->n[i] = (CYL__R)dh[k].n[i];
+        v = v > (double)Hu ? (double)Hu : (v < -(double)Hu ? -(double)Hu : v);
+        if (CYL__P(labs)(v) > (CYL__L)CYL__MAXR) v = v > 0 ? (double)CYL__MAXR : -(double)CYL__MAXR;
+        o->v = (CYL__R)v;
+        o->part = dh[k].part;
+        o->flags = dh[k].flags;
+    }
+    return kept;
 }
+#endif
 
 /* The solver's entry points stay out of line: the fast path answers nearly every call, and
    a small public function inlines into the caller's loop, where the options fold. */
+#if CYL__QUICK && CYL__WIDE
+CYL__SLOW int CYL__P(slow_intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                                     unsigned opts, CYL__N(hit) *hit)
+{
+    int rc = CYL__P(check)(ray, cyl, opts);
+    return rc ? rc : CYL__P(wsolve)(ray, cyl, opts, 1, hit);
+}
+
+CYL__SLOW int CYL__P(slow_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                               unsigned opts, CYL__N(hit) hits[2])
+{
+    int rc = CYL__P(check)(ray, cyl, opts);
+    return rc ? rc : CYL__P(wsolve)(ray, cyl, opts, 2, hits);
+}
+
+CYL__SLOW int CYL__P(slow_occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                                    unsigned opts)
+{
+    CYL__N(hit) unused; /* want = 0: nothing is written */
+    int rc = CYL__P(check)(ray, cyl, opts);
+    return rc ? rc : CYL__P(wsolve)(ray, cyl, opts, 0, &unused);
+}
+#else
 CYL__SLOW int CYL__P(slow_intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                                      unsigned opts, CYL__N(hit) *hit)
 {
@@ -2442,8 +2519,6 @@ CYL__SLOW int CYL__P(slow_intersect)(const CYL__N(ray) *ray, const CYL__N(cylind
     CYL__P(cand) c[2];
     int rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
-    if (CYL__P(wideok)() && (rc = CYL__P(fast)(ray, cyl, opts | CYL_PRECISE, 1, hit)) >= 0)
-        return rc;
     if (!CYL__P(solve)(ray, cyl, opts, &f, c)) return CYL_MISS;
     CYL__P(finish)(&f, &c[0], opts, ray, hit);
     return CYL_HIT;
@@ -2456,8 +2531,6 @@ CYL__SLOW int CYL__P(slow_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *c
     CYL__P(cand) c[2];
     int k, n, rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
-    if (CYL__P(wideok)() && (n = CYL__P(fast)(ray, cyl, opts | CYL_PRECISE, 2, hits)) >= 0)
-        return n;
     n = CYL__P(solve)(ray, cyl, opts, &f, c);
     for (k = 0; k < n; k++) CYL__P(finish)(&f, &c[k], opts, ray, &hits[k]);
     if (n == 2) CYL__P(order2)(hits);
@@ -2469,13 +2542,11 @@ CYL__SLOW int CYL__P(slow_occluded)(const CYL__N(ray) *ray, const CYL__N(cylinde
 {
     CYL__P(frame) f;
     CYL__P(cand) c[2];
-    CYL__N(hit) unused; /* want = 0: the fast path writes no hit */
     int rc = CYL__P(check)(ray, cyl, opts);
     if (rc) return rc;
-    if (CYL__P(wideok)() && (rc = CYL__P(fast)(ray, cyl, opts | CYL_PRECISE, 0, &unused)) >= 0)
-        return rc;
     return CYL__P(solve)(ray, cyl, opts, &f, c) > 0;
 }
+#endif
 
 CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                               unsigned opts, CYL__N(hit) *hit)

@@ -83,15 +83,18 @@ static void test_sqrt_and_fma_overrides_are_called(void)
 #endif
     n_sqrt = 0;
     TEST_ASSERT_EQUAL_INT(CYL_HIT, cylf_intersect(&rf, &cf, CYL_PRECISE, &hf));
-#if CYL_FLOAT_WIDE /* the precise tier's fast path computes in double too */
+#if CYL_FLOAT_WIDE /* the float API's precise tier computes in double too, solver included */
     TEST_ASSERT_TRUE_MESSAGE(n_sqrt > 0, "CYL_SQRT used by cylf_intersect's precise tier");
     {
-        /* a tangent contact (e = 0): the precise tier hands it to the solver, in float */
-        cylf_ray rt = ray_f(1, 1, 0);
-        TEST_ASSERT_EQUAL_INT(CYL_HIT, cylf_intersect(&rt, &cf, CYL_PRECISE, &hf));
+        /* cylf_from_segment's length is a float square root */
+        const float p0[3] = {0, 0, 0}, p1[3] = {0, 0, 2};
+        cylf_cylinder cs = cylf_from_segment(p0, p1, 1);
+        TEST_ASSERT_EQUAL_FLOAT(2.0f, cs.h); /* exact: sqrt(4) */
     }
-#endif
+    TEST_ASSERT_TRUE_MESSAGE(n_sqrtf > 0, "CYL_SQRTF used by cylf_from_segment");
+#else
     TEST_ASSERT_TRUE_MESSAGE(n_sqrtf > 0, "CYL_SQRTF used by cylf_intersect's precise tier");
+#endif
     TEST_ASSERT_EQUAL_INT(CYL_HIT, cyld_intersect(&rd, &cd, CYL_PRECISE, &hd));
     TEST_ASSERT_TRUE_MESSAGE(n_fmaf > 0, "CYL_FMAF used (default or precise path)");
     TEST_ASSERT_TRUE_MESSAGE(n_fma > 0, "CYL_FMA used (default or precise path)");
