@@ -101,12 +101,12 @@
    for double ones, no live value it does not need, a normal from (a × x) × a, and the
    residual bound of note 8, also in double. For the double API (and the float API computed in
    float) the crossing is then corrected from double words: a wall root by the exact-quadratic
-   step of note 4, a cap crossing as in note 5; so t is about an ulp in both APIs. For an
-   origin on the surface within the roundings (a secondary ray) C = f(0) is formed from the
-   exact o − c first, so the crossing near t = 0 is decided from an accurate value; so it is
-   wherever the rounding of C could move the root C/q across a rim (or, in the double API, an
-   end of the t range): that root moves by about u·r/sin of the angle to the axis, and a flat
-   disk (h far below r) multiplies that by r/h in units of its rim margin. Its
+   step of note 4, a cap crossing as in note 5; so t is about an ulp in both APIs. There, for
+   an origin on the surface within the roundings (a secondary ray), C = f(0) is formed from the
+   exact o − c first, so the crossing near t = 0 is decided from an accurate value; and in
+   every API it is wherever the rounding of C could move the root C/q across a rim (or, in the
+   double API, an end of the t range): that root moves by about u·r/sin of the angle to the
+   axis, and a flat disk (h far below r) multiplies that by r/h in units of its rim margin. Its
    decisions (tangency, rim, tmin/tmax) carry the plain roundings: within a few ulps of a
    threshold they can go either way, and farther for origins far from the axis (the rounding
    of o − c is about u·|o − c|/r of e). t_err is rigorous on every path (note 8). Inputs
@@ -1618,8 +1618,8 @@ CYL__SLOW CYL__L CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 #endif
 
 /* Could the rounding of C (|δC| <= eC) move the root t = C/q (frame) across a rim (v|a| =
-   v = a·w + t·a·d against ±H|a|), or with ends = 1 across tmin or tmax (t·tsc)? It moves it by up
-   to eC/|q|, which for an origin near the wall grows like 1/sin of the angle to the axis: a
+   a·w + t·a·d, computed: v, against ±H|a|), or with ends = 1 across tmin or tmax (t·tsc)? It
+   moves it by up to eC/|q|, which for an origin near the wall grows like 1/sin of the angle to the axis: a
    ray nearly parallel to it (fuzz findings 31, 32). At a rim that error is also multiplied by
    r/h, so even C's rounding in double can decide a float rim there. Compared without a
    division, with a factor 4 for the roundings of the test; infinite ends never qualify. */
@@ -1811,7 +1811,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
            of the rim margin; and an h/2 that rounds (h subnormal in the frame). The float API
            computed in double certifies (CYL_PRECISE, and every hand-over of the lean path)
            up to 2^40, where the first-order error bounds still hold with room (2^-10 of the
-           quantities they bound): the float solver's double words would do worse there. */
+           quantities they bound). */
         const CYL__L far = CYL__LD ? (CYL__WIDE && ce ? (CYL__L)1099511627776.0 /* 2^40 */
                                                       : (CYL__L)1073741824.0)  /* 2^30 */
                                    : (CYL__L)4096.0;
