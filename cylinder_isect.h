@@ -222,12 +222,14 @@
    the wall test then compares distances linearly, may misjudge rays within the rounding of
    o − c of the axis, and reports t_err = +inf; when h/2 exceeds |o − c| and r by
    more than 2^123 (float) or 2^1019 (double), the cap planes are computed at a coarser scale
-   of their own and cap hits carry t_err = +inf. Flat disks in float-only builds
-   (CYL_FLOAT_WIDE = 0): for an origin on the wall and a ray nearly parallel to the axis the
-   crossing near t = 0 is decided against the rim with an error of about 2^-46·r/(h·sin) of
-   the rim margin (float double words), so past r/(h·sin) of about 2^30 the rim can go either
-   way on every path, CYL_PRECISE included (the bench's flat family finds such cases in a
-   float-only build); where double is hardware it is certified.
+   of their own and cap hits carry t_err = +inf. Flat disks: for an origin on the wall and a
+   ray nearly parallel to the axis, the crossing near t = 0 is decided against the rim with
+   an error of about X = r/(h·sin) times the solver's double words, 2^-106·X in the double
+   API and the float API computed in double, 2^-46·X in float-only builds (CYL_FLOAT_WIDE =
+   0), relative to the rim margin: past X of about 2^60 (double), 2^90 (float computed in
+   double) or 2^30 (float only) the rim can go either way on every path, CYL_PRECISE
+   included. The bench's flat family (X up to 2^83 in double, 2^54 in float) finds them only in
+   a float-only build.
    Conditioning: near tangency a relative input change ε moves t by about √ε·r/(|d|·sin);
    on the default path the rounding of D (about u·|o − c|/r relative to e) decides hit or
    miss for origins beyond about 1/(256u) radii; CYL_PRECISE removes that term.
