@@ -1599,22 +1599,34 @@ CYL__INL CYL__R CYL__P(fclamp)(const CYL__N(ray) *ray, CYL__R tsc, CYL__R *t, CY
     return CYL__P(abs)(*t * tsc - *tu);
 }
 #else
-/* The float API computed in double: C from the exact o − c by the double instance's fc0. The
-   frame's a, d and s are doubles already, and float o, c and r convert exactly; lengths are
-   not scaled in double (fscale), so lf is 1. */
+/* The float API computed in double hands the double instance the float inputs (exact). */
+CYL__INL void CYL__P(todbl)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, cyld_ray *dr,
+                           cyld_cylinder *dc)
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        dr->o[i] = (double)ray->o[i];
+        dr->d[i] = (double)ray->d[i];
+        dc->c[i] = (double)cyl->c[i];
+        dc->a[i] = (double)cyl->a[i];
+    }
+    dr->tmin = (double)ray->tmin;
+    dr->tmax = (double)ray->tmax;
+    dc->r = (double)cyl->r;
+    dc->h = (double)cyl->h;
+}
+
+/* C from the exact o − c by the double instance's fc0. The frame's a, d and s are doubles
+   already, and r converts exactly; lengths are not scaled in double (fscale), so lf is 1. */
 CYL__SLOW CYL__L CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                            const CYL__L a[3], const CYL__L d[3], const CYL__L s[3], CYL__L r,
                            const CYL__R lf[2])
 {
     const double one[2] = {1, 1};
-    cyld_ray dr = {{0, 0, 0}, {0, 0, 0}, 0, 0};
-    cyld_cylinder dc = {{0, 0, 0}, {0, 0, 0}, 0, 0};
-    int i;
+    cyld_ray dr;
+    cyld_cylinder dc;
     (void)lf;
-    for (i = 0; i < 3; i++) {
-        dr.o[i] = (double)ray->o[i];
-        dc.c[i] = (double)cyl->c[i];
-    }
+    CYL__P(todbl)(ray, cyl, &dr, &dc);
     return cyl__d_fc0(&dr, &dc, a, d, s, r, one);
 }
 #endif
@@ -2456,16 +2468,7 @@ CYL__SLOW int CYL__P(wsolve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
     int i, k, n, kept = 0, sel[2] = {0, 0};
     n = CYL__P(fast)(ray, cyl, opts | CYL_PRECISE, want, hits);
     if (n >= 0) return n;
-    for (i = 0; i < 3; i++) {
-        dr.o[i] = (double)ray->o[i];
-        dr.d[i] = (double)ray->d[i];
-        dc.c[i] = (double)cyl->c[i];
-        dc.a[i] = (double)cyl->a[i];
-    }
-    dr.tmin = (double)ray->tmin;
-    dr.tmax = (double)ray->tmax;
-    dc.r = (double)cyl->r;
-    dc.h = (double)cyl->h;
+    CYL__P(todbl)(ray, cyl, &dr, &dc);
     n = cyl__d_solvet(&dr, &dc, opts, (double)CYL__TANG, (double)CYL__PARA, &f, c);
     for (k = 0; k < n && kept < (want < 2 ? 1 : 2); k++)
         if (CYL__P(labs)(c[k].tu) <= (CYL__L)CYL__MAXR) sel[kept++] = k;
