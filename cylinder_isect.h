@@ -209,14 +209,15 @@
    Measured against the exact MPFR reference of ref/ on eleven case families, 6000 cases each
    with and without caps (`make report`, seed 20261122, x86-64 with FMA; bench/REPORT.md has
    every family; `make test` asserts the targets on a fixed-seed sample): t_err contained the
-   exact t in all 481,348 float and 498,511 double hits of every variant; default path: no misclassification
-   beyond the band in any family for float (in double) and in the benign ones for double,
-   t within 0.5 ulps on the well-conditioned hits of the benign families in both; CYL_PRECISE:
-   none beyond the band in any family, 0.5 ulps. Time per call there: float 94 ns (precise
-   94), double 132 ns (precise 199), against 59 / 47 ns for the end-point formulation and
-   66 / 77 ns for the literal one (a shared machine: compare within one run); those two
-   misclassify 18,787 / 14,463 and 17,748 / 9,238 cases beyond the band. Without t_err and
-   the normal the float path takes 78 ns; `make insn` counts the instructions per call.
+   exact t in all 510,576 float and 523,679 double hits of every variant; default path: no
+   misclassification beyond the band in any family in either API (the target is the benign
+   ones), t within 0.5 ulps on the well-conditioned hits of the benign families in both;
+   CYL_PRECISE: none beyond the band in any family, 0.5 ulps. Time per call there: float
+   95 ns (precise 96), double 157 ns (precise 232), against 57 / 54 ns for the end-point
+   formulation and 66 / 86 ns for the literal one (a shared machine: compare within one run);
+   those two misclassify 18,787 / 14,644 and 19,839 / 10,278 cases beyond the band. Without
+   t_err and the normal the float path takes 82 ns; `make insn` counts the instructions per
+   call.
    Extreme ratios: when r is below 2^-31 (float computed in float) or 2^-435 (double, and so
    out of reach of float inputs computed in double) of |o − c|, r² underflows in the frame:
    the wall test then compares distances linearly, may misjudge rays within the rounding of
