@@ -369,7 +369,7 @@ static void test_double_surface_origin_parallel_ray_rim(void)
   }
 }
 
-/* Finding 32 (fixed by cb6c497 and 6562fbd; found by a targeted search, not by the fuzzers,
+/* Finding 32 (fixed by cb6c497, 6562fbd, a43777d; found by a targeted search, not by the fuzzers,
  * whose reference comparison exempts rays this close to the parallel tolerance; now the
  * benchmark's flat family). Float API computed in double: flat disks (r/h ~ 1e8) and an
  * origin on the wall, a ray nearly parallel to the axis (sin ~ 6e-8). The root near t = 0,
