@@ -510,6 +510,18 @@ CYL_DEF const char *cyl_strerror(int code)
 
 #else /* CYL__BODY: one precision, written once; included above with CYL__R = float, double */
 
+/* No contraction of a product into a following sum inside this file: gcc outside the ISO
+   modes (-std=gnu*, its default, and C++) fuses x*y + z across statements into an FMA where
+   the target has one, and a TwoSum of a rounded product then loses its exact error term: the
+   double words of the solver and of the corrections came out wrong by far more than their
+   bounds (fuzz finding 33). ISO C modes (-std=c99, c11, ...) do not contract; clang contracts
+   only inside one expression, which every error-free transformation here keeps apart, except
+   under -ffp-contract=fast, which ignores this and every other pragma: do not use it. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+#endif
+
 /* The fast path's working type (see the fast path): double or float, chosen by the instance. */
 #if CYL__LD
 #define CYL__L double
@@ -2655,4 +2667,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__LD
 #undef CYL__FASTQ
 
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
+#endif
 #endif /* CYL__BODY */

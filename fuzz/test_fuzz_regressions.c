@@ -425,6 +425,36 @@ static void test_float_precise_flat_disk_solver_spurious_hit(void)
   flat_disk_case(&ray, &cyl, (double)NAN);
 }
 
+/* Finding 33 (fixed by the commit that added it; found by a targeted search of the double API
+ * built with gcc -O2 -march=native, the GNU C default -ffp-contract=fast). gcc fused the
+ * rounded product of a TwoSum's operand into the sum (an FMA across statements), so the
+ * double words of a × (o − c) lost their exact error term (low part 2^-19 instead of 2^-50
+ * of a 40), and the solver returned t = 45063509.64 +- 0.136 for the exact 42264547.19: t_err
+ * not rigorous, in both tiers. The header now turns contraction off for its own code under
+ * gcc. This test can only fail where contraction is on: the regression runner is also built
+ * with -std=gnu99 -mfma (build/fuzz/test_fuzz_regressions_gnu). Exact answer (ref/, and an
+ * independent rational evaluation): t = 42264547.190495157640..., the nearer of two wall
+ * crossings of the infinite tube. */
+static void test_double_contracted_two_sum_t_err(void)
+{
+  cyld_ray ray = {{-0x1.4afdc0c0be884p+36, 0x1.17daa7b35256fp+42, -0x1.3f054e9611242p+42},
+                  {0x1.8f4e72f6cc8e1p-7, -0x1.519d66beb060cp-1, 0x1.80dd833aed017p-1},
+                  -(double)INFINITY, 0x1.6f3a8a66d393fp+52};
+  cyld_cylinder cyl = {{0, 0, 0}, {-0x1.0fb909d47f9b1p-13, 0x1.cb7c26ef9bb77p-8,
+                                   -0x1.05e55247b7cfap-7}, 0x1p+12, (double)INFINITY};
+  const double t_exact = 42264547.190495158; /* nearest double: 0x1.4273f19862253p+25 */
+  unsigned opts[] = {0u, CYL_PRECISE, CYL_CAPS, CYL_CAPS | CYL_PRECISE};
+  size_t i;
+  for (i = 0; i < sizeof opts / sizeof opts[0]; i++) {
+    cyld_hit h[2];
+    memset(h, 0, sizeof h);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(CYL_HIT, cyld_intersect(&ray, &cyl, opts[i], h), "intersect");
+    TEST_ASSERT_TRUE_MESSAGE(fabs(h[0].t - t_exact) <= h[0].t_err, "t_err does not hold t");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(2, cyld_intersect_all(&ray, &cyl, opts[i], h), "intersect_all");
+    TEST_ASSERT_TRUE_MESSAGE(fabs(h[0].t - t_exact) <= h[0].t_err, "t_err does not hold t (all)");
+  }
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -464,5 +494,6 @@ int main(void)
   RUN_TEST(test_float_flat_disk_surface_origin_parallel_rim);
   RUN_TEST(test_float_precise_flat_disk_rim_beyond_lean_range);
   RUN_TEST(test_float_precise_flat_disk_solver_spurious_hit);
+  RUN_TEST(test_double_contracted_two_sum_t_err);
   return UNITY_END();
 }
