@@ -455,6 +455,31 @@ static void test_double_contracted_two_sum_t_err(void)
   }
 }
 
+/* Finding 34 (fixed by the commit that added it; found by the same double-API search). A ray
+ * parallel to the axis within the tolerance (sin = 3.7e-17) from an origin 2^40 radii away:
+ * the solver's cap-disk test formed the crossing point plainly, x = (o - c) + t·d, which
+ * rounds by about u·|o - c| = 0.5 against r = 2687, and took the high cap 2.7e-6 outside its
+ * disk for a hit (both tiers). It now forms the point and |a × x|² - r²|a|² in double words.
+ * Exact answer (ref/): no hit, capped. */
+static void test_double_parallel_far_cap_outside_disk(void)
+{
+  cyld_ray ray = {{-0x1.d44ae520b6f53p+47, 0x1.17ee1eeee1215p+51, 0x1.5020f9991ce59p+19},
+                  {0x1.6a4f81ee6cc64p-10, -0x1.b127b54c6f7a5p-7, -0x1.027fdee81ee0fp-38},
+                  -(double)INFINITY, (double)INFINITY};
+  cyld_cylinder cyl = {{0x1.90d6fdf684c2p+11, 0x1.4591e7f4f4fc5p+12, 0x1.3f40b15a467f7p+12},
+                       {-0x1.8c3695b4a0582p-14, 0x1.d9afda1fe8842p-11, 0x1.1ab02ec3d196bp-42},
+                       0x1.4ff1872db1f4ep+11, 0x1.def37a1ddcf43p+12};
+  unsigned opts[] = {CYL_CAPS, CYL_CAPS | CYL_PRECISE};
+  size_t i;
+  for (i = 0; i < sizeof opts / sizeof opts[0]; i++) {
+    cyld_hit h[2];
+    memset(h, 0, sizeof h);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, cyld_occluded(&ray, &cyl, opts[i]), "occluded");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(CYL_MISS, cyld_intersect(&ray, &cyl, opts[i], h), "intersect");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, cyld_intersect_all(&ray, &cyl, opts[i], h), "intersect_all");
+  }
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -495,5 +520,6 @@ int main(void)
   RUN_TEST(test_float_precise_flat_disk_rim_beyond_lean_range);
   RUN_TEST(test_float_precise_flat_disk_solver_spurious_hit);
   RUN_TEST(test_double_contracted_two_sum_t_err);
+  RUN_TEST(test_double_parallel_far_cap_outside_disk);
   return UNITY_END();
 }
