@@ -240,7 +240,10 @@
    No ray packets or SIMD batches, no BVH, no elliptic or oblique cylinders, no cones, no
    texture coordinates beyond v. It does not nudge spawned rays: use tmin or the t_err of the
    previous hit for that. Results assume IEEE-754 arithmetic with FLT_EVAL_METHOD == 0 (true on
-   x86-64 SSE, ARM, RISC-V) and no -ffast-math: the file refuses to build otherwise.
+   x86-64 SSE, ARM, RISC-V) and no -ffast-math: the file refuses to build otherwise. Its
+   error-free transformations need products kept apart from the sums that follow them: gcc's
+   default contraction outside the ISO modes (-std=gnu*, C++) is turned off for this file's
+   code by a pragma, but clang's -ffp-contract=fast ignores pragmas: do not build with it.
 
    LICENSE: MIT. Copyright (c) 2026 the cylinder_isect developers.
 */
