@@ -213,8 +213,8 @@
    misclassification beyond the band in any family in either API (the target is the benign
    ones), t within 0.5 ulps on the well-conditioned hits of the benign families in both;
    CYL_PRECISE: none beyond the band in any family, 0.5 ulps. Time per call there: float
-   95 ns (precise 96), double 157 ns (precise 232), against 57 / 54 ns for the end-point
-   formulation and 66 / 86 ns for the literal one (a shared machine: compare within one run);
+   97 ns (precise 98), double 139 ns (precise 208), against 60 / 50 ns for the end-point
+   formulation and 71 / 79 ns for the literal one (a shared machine: compare within one run);
    those two misclassify 18,787 / 14,644 and 19,839 / 10,278 cases beyond the band. Without
    t_err and the normal the float path takes 82 ns; `make insn` counts the instructions per
    call.
@@ -227,10 +227,11 @@
    ray nearly parallel to the axis, the crossing near t = 0 is decided against the rim with
    an error of about X = r/(h·sin) times the solver's double words, 2^-106·X in the double
    API and the float API computed in double, 2^-46·X in float-only builds (CYL_FLOAT_WIDE =
-   0), relative to the rim margin: past X of about 2^60 (double), 2^90 (float computed in
-   double) or 2^30 (float only) the rim can go either way on every path, CYL_PRECISE
-   included. The bench's flat family (X up to 2^83 in double, 2^54 in float) finds them only in
-   a float-only build.
+   0), relative to the rim margin, times up to about 2^10: past X of about 2^50 (double),
+   2^80 (float computed in double) or 2^20 (float only) the rim can go either way on every
+   path, CYL_PRECISE included (targeted searches found such cases from X = 2^52.5 in double
+   and 2^30.4 in float-only builds, none in float computed in double). The bench's flat family
+   (X up to 2^83 in double, 2^54 in float) finds them only in a float-only build.
    Conditioning: near tangency a relative input change ε moves t by about √ε·r/(|d|·sin);
    on the default path the rounding of D (about u·|o − c|/r relative to e) decides hit or
    miss for origins beyond about 1/(256u) radii; CYL_PRECISE removes that term.
