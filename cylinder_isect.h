@@ -520,10 +520,17 @@ CYL_DEF const char *cyl_strerror(int code)
    double words of the solver and of the corrections came out wrong by far more than their
    bounds (fuzz finding 33). ISO C modes (-std=c99, c11, ...) do not contract; clang contracts
    only inside one expression, which every error-free transformation here keeps apart, except
-   under -ffp-contract=fast, which ignores this and every other pragma: do not use it. */
-#if defined(__GNUC__) && !defined(__clang__)
+   under -ffp-contract=fast, which ignores this and every other pragma: do not use it. Only
+   where gcc would contract (a GNU mode or C++, and a hardware FMA): the pragma also changes
+   how gcc -Os expands struct copies (a memcpy call on RV32 and Cortex-M0). */
+#if defined(__GNUC__) && !defined(__clang__) &&                                                 \
+    (!defined(__STRICT_ANSI__) || defined(__cplusplus)) &&                                       \
+    (defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF))
+#define CYL__NOCONTRACT 1
 #pragma GCC push_options
 #pragma GCC optimize("fp-contract=off")
+#else
+#define CYL__NOCONTRACT 0
 #endif
 
 /* The fast path's working type (see the fast path): double or float, chosen by the instance. */
@@ -2688,7 +2695,8 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__LD
 #undef CYL__FASTQ
 
-#if defined(__GNUC__) && !defined(__clang__)
+#if CYL__NOCONTRACT
 #pragma GCC pop_options
 #endif
+#undef CYL__NOCONTRACT
 #endif /* CYL__BODY */
