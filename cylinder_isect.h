@@ -229,9 +229,8 @@
    API and the float API computed in double, 2^-46·X in float-only builds (CYL_FLOAT_WIDE =
    0), relative to the rim margin, times up to about 2^10: past X of about 2^50 (double),
    2^80 (float computed in double) or 2^20 (float only) the rim can go either way on every
-   path, CYL_PRECISE included (targeted searches found such cases from X = 2^52.5 in double
-   and 2^30.4 in float-only builds, none in float computed in double). The bench's flat family
-   (X up to 2^83 in double, 2^54 in float) finds them only in a float-only build.
+   path, CYL_PRECISE included. The bench's flat family (X up to 2^83 in double, 2^54 in
+   float) finds them only in a float-only build.
    Conditioning: near tangency a relative input change ε moves t by about √ε·r/(|d|·sin);
    on the default path the rounding of D (about u·|o − c|/r relative to e) decides hit or
    miss for origins beyond about 1/(256u) radii; CYL_PRECISE removes that term.
