@@ -83,7 +83,11 @@
      CYL_TRUSTED       skip input validation (NULL and option checks remain): the caller
                        guarantees finite inputs, nonzero d and a, r > 0, h > 0, tmin <= tmax
    Pass options as constants where you can: the functions are inline, so unused paths fold
-   away (measured: see `make sizes`).
+   away where the compiler inlines the call (measured: see `make sizes`). gcc -O2 inlines an
+   entry point called from one place; called from several, it may keep one out-of-line copy in
+   which the options are run-time values (gcc 12 did so in bench/eval.c and in the viewer
+   experiment of docs/examples.md). Then route the calls through one function of yours per
+   option set, or define CYL_DEF as a forced inline.
 
    Errors, checked in this order; *hit is never touched on an error:
      CYL_E_NULL (-1) a NULL pointer            CYL_E_RADIUS (-5) r <= 0, NaN or infinite

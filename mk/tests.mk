@@ -6,7 +6,8 @@
 #   runners   CYL_NO_FLOAT, CYL_NO_DOUBLE, -DCYL_NO_PRECISE, user overrides (CYL_SQRTF/CYL_SQRT/
 #             CYL_FMAF/CYL_FMA/CYL_DEF and the tolerance macros), two translation units linked
 #             together (the last two also as C++11); the contract suite with CYL_FLOAT_WIDE=0,
-#             with CYL_NO_FAST_PATH, and with a hardware FMA (-mfma, where this machine has one)
+#             with CYL_NO_FAST_PATH, with a hardware FMA (-mfma, where this machine has one), and
+#             with every entry point forced inline (tests/config/cfg_forced_inline.h)
 #   prereq    -ffast-math must stop the build at the header's #error (gcc and clang)
 # Build one runner alone: make build/gcc-O0/test_float && build/gcc-O0/test_float
 
@@ -37,6 +38,9 @@ $(eval $(call TESTS_CFG_RUNNER,two_tu_cxx,tests/config/cfg_two_tu_main.c tests/c
 # double FPU), and Kahan's FMA products where the FMA is hardware (x86-64 with FMA3 only, so
 # that the runner can execute here).
 $(eval $(call TESTS_CFG_RUNNER,float_narrow,tests/test_float.c,-DCYL_FLOAT_WIDE=0,c))
+# The contract suite with every entry point forced inline (the header's advice where a caller
+# calls one from several places): each call site folds its own constant options.
+$(eval $(call TESTS_CFG_RUNNER,forced_inline,tests/test_float.c,-include tests/config/cfg_forced_inline.h,c))
 # ... and without it: the compensated solver answers every call (CYL_NO_FAST_PATH)
 $(eval $(call TESTS_CFG_RUNNER,no_fast_float,tests/test_float.c,-DCYL_NO_FAST_PATH,c))
 $(eval $(call TESTS_CFG_RUNNER,no_fast_double,tests/test_double.c,-DCYL_NO_FAST_PATH,c))
