@@ -33,7 +33,7 @@ BENCH_WARN   := $(filter-out -Werror,$(WARN_C))
 
 $(BENCH_BUILD)/bench: bench/bench.c $(BENCH_SRCS) $(BENCH_HDRS)
 	@mkdir -p $(@D)
-	$(GCC) $(BENCH_WARN) $(BENCH_OPT) -DBENCH_CFLAGS='"$(BENCH_OPT)"' $(BENCH_INC) $< $(BENCH_SRCS) $(BENCH_LIBS) -o $@
+	$(GCC) $(BENCH_WARN) $(BENCH_OPT) -DEV_TIMING -DBENCH_CFLAGS='"$(BENCH_OPT)"' $(BENCH_INC) $< $(BENCH_SRCS) $(BENCH_LIBS) -o $@
 
 # alt_formulations.h is used by other code (the viewer): strict C with clang and strict C++.
 $(BENCH_BUILD)/alt_check.stamp: bench/alt_formulations.h cylinder_isect.h bench/insn.c
