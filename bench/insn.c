@@ -2,12 +2,13 @@
  *
  *   build/bench/insn PREC FAMILY CAPS VARIANT [N]     e.g.  insn 24 well 1 quilez 2000
  *
- * Runs N cases of the family (bench/cases.c, the report's seed) through one variant once,
- * inside insn_run; `make insn` runs it under `valgrind --tool=callgrind
- * --toggle-collect=insn_run` (only that function and what it calls is counted) and divides by
- * N. Unlike time, the count is the same on every run of the same binary, whatever else the
- * machine does; it says nothing of latency, mispredictions or cache, so it complements the
- * report's ns/call and does not replace it. VARIANT "none" runs the loop without a call. */
+ * Runs N cases of the family (bench/cases.c, the report's seed) once through one variant's
+ * timing loop (eval.c: the code the benchmark times, options folded), inside insn_run;
+ * `make insn` runs it under `valgrind --tool=callgrind --toggle-collect=insn_run` (only that
+ * function and what it calls is counted) and divides by N. Unlike time, the count is the same
+ * on every run of the same binary, whatever else the machine does; it says nothing of latency,
+ * mispredictions or cache, so it complements the report's ns/call and does not replace it.
+ * VARIANT "none" runs a loop of the same shape without a call. */
 #include "eval.h"
 
 #include <stdio.h>
@@ -30,15 +31,20 @@ __attribute__((noinline))
 #endif
 void insn_run(const insn_io *io);
 
+/* A variant runs its timing loop once (one pass, reps = 1): the code the benchmark times, with
+   its options folded (eval.c, EV_TIMING). "none" runs a loop of the same shape without a call;
+   its count, subtracted, leaves each call and its share of the loop. */
 void insn_run(const insn_io *io)
 {
-    cyld_hit hit; /* large enough for either precision's hit */
     double acc = 0;
     int i;
-    memset(&hit, 0, sizeof hit);
+    if (io->v) {
+        insn_sink = io->v->time[io->caps](io->rays, io->cyls, io->n, 1);
+        return;
+    }
     for (i = 0; i < io->n; ++i) {
-        const void *ray = io->rays + (size_t)i * io->rs, *cyl = io->cyls + (size_t)i * io->cs;
-        if (io->v && io->v->call[io->caps](ray, cyl, &hit) > 0) acc += 1;
+        const char *ray = io->rays + (size_t)i * io->rs;
+        acc += (double)(unsigned char)ray[0];
     }
     insn_sink = acc;
 }

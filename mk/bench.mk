@@ -76,7 +76,7 @@ INSN_OPT     ?= -O2 -march=x86-64-v3 -fno-math-errno
 INSN_FAMILIES ?= well grazing huge
 $(BENCH_BUILD)/insn: bench/insn.c $(BENCH_SRCS) $(BENCH_HDRS)
 	@mkdir -p $(@D)
-	$(GCC) $(BENCH_WARN) $(INSN_OPT) $(BENCH_INC) $< $(BENCH_SRCS) $(BENCH_LIBS) -o $@
+	$(GCC) $(BENCH_WARN) $(INSN_OPT) -DEV_TIMING $(BENCH_INC) $< $(BENCH_SRCS) $(BENCH_LIBS) -o $@
 TEST_PREREQS += $(BENCH_BUILD)/insn
 
 .PHONY: insn
