@@ -127,8 +127,8 @@
    CYL_PRECISE starts on the fast path too, but certifies every decision: each is taken only
    where the computed value is farther from its threshold than an a-priori bound on its error
    (the parallel test, D against the tangent band, each root against the rims, each crossing
-   against tmin and tmax, and a start close enough for the final correction, which takes a
-   second step where one is not enough); anything closer, and every tangent or parallel
+   against tmin and tmax, and a start close enough for the final correction, which takes up
+   to six steps where one is not enough); anything closer, and every tangent or parallel
    contact, go to the compensated solver, with every wall coefficient compensated and the rim
    decided from the corrected roots (note 7). A crossing whose bound shows it within the t-range
    band of tmin or tmax, 2^-(p−8)·max(|t|, r/|d|) (p = 24, 53), is kept or dropped as the plain
@@ -354,6 +354,9 @@
 #define CYL_PARALLEL_TOL (1.0 / 9007199254740992.0)           /* 2^-53 */
 #endif
 
+/* CYL_PRECISE's fast path: at most this many exact-quadratic steps from one start, then the
+   solver (a start two steps cannot correct is rare but for grazing rays just inside the tube) */
+#define CYL__STEPS 6
 #ifdef CYL_NO_PRECISE
 #define CYL__SUPPORTED (CYL_OPTIONS_ALL & ~CYL_PRECISE)
 #else
@@ -1481,8 +1484,8 @@ typedef struct CYL__P(fx) { /* one crossing of the fast path */
     int sg;                 /* wall 0, low cap −1, high cap +1 */
     int ok;                 /* the crossing exists */
     int steps;              /* corrections in the output: a wall crossing's exact-quadratic
-                               steps (1 or 2); a cap crossing's fcapt (1, or 0: t is already
-                               fcapt's) */
+                               steps (1 to CYL__STEPS); a cap crossing's fcapt (1, or 0: t is
+                               already fcapt's) */
 } CYL__P(fx);
 
 CYL__INL CYL__L CYL__P(labs)(CYL__L x) { return CYL__LABS(x); }
@@ -1914,7 +1917,8 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         band = (CYL__L)CYL__TANG * r2 * A;
         if (ce) {
             /* certified: beside, or clearly crossed; a contact near the tangent band (either
-               side of it) goes to the solver */
+               side of it) goes to the solver, whose compensated D gives its crossings to
+               about an ulp (the plain D errs by about the band's width) */
             CYL__L eP = 3 * mw * (4 * u * ms + (1 + u) * es) + tiny;
             eD = (r2 * (3 * u * A + eA) + (3 * u * CYL__P(labs)(P) + 2 * eP) *
                   (CYL__P(labs)(P) + eP) + u * CYL__P(labs)(D)) * sf + tiny;
@@ -1978,15 +1982,17 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                        with this √(|a|²D): its error is the start's times that of √, which must
                        stay under an ulp of max(|t|, r/|d|) (rays near the axis direction
                        without an FMA start far off, origins far along a thin tube). Where one
-                       step is not enough, the first leaves at most twice its first-order error
-                       et·esq/sq plus its roundings, and a second step from there must be (a
-                       root that gives way to a cap plane is not corrected at all) */
+                       step is not enough, each leaves at most twice its first-order error
+                       e·esq/sq plus its roundings, and the step from there starts with that e:
+                       up to CYL__STEPS steps (two roots a few √ errors apart converge slowly:
+                       grazing rays just inside the tube), then the solver (a root that gives
+                       way to a cap plane is not corrected at all) */
                     if (ce && !c[k].sg) {
-                        CYL__L at = CYL__P(labs)(tw[k]), lim = (CYL__L)0.25 * u * sq * (at * md + r);
-                        if (!(c[k].et * esq * md <= lim)) {
-                            CYL__L e1 = 2 * c[k].et * esq / sq + 2 * u * (at + r / md);
-                            if (!(e1 * esq * md <= lim)) return -1;
-                            c[k].steps = 2;
+                        CYL__L at = CYL__P(labs)(tw[k]), lim = (CYL__L)0.25 * u * sq * (at * md + r),
+                               e1 = c[k].et;
+                        while (!(e1 * esq * md <= lim)) {
+                            if (++c[k].steps > CYL__STEPS) return -1;
+                            e1 = 2 * e1 * esq / sq + 2 * u * (at + r / md);
                         }
                     }
                     if (ce && hfin) {
