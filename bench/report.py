@@ -111,7 +111,9 @@ def main():
     L.append(f"| cases | {R['n']} per family x caps on/off x precision; every variant runs the "
              f"same cases |")
     L.append(f"| timing | throughput over the family's cases, {R['rounds']} interleaved rounds of "
-             f"~{R['block_ms']} ms per variant, fastest round; shared machine, so compare ratios |")
+             f"~{R['block_ms']} ms per variant, fastest round; each variant's loop inlines the "
+             f"library with its options folded, as at a user's single call site; shared "
+             f"machine, so compare ratios |")
     if R.get("unavailable"):
         L.append(f"| not available in this build | {', '.join(R['unavailable'])} |")
     L.append("")
