@@ -128,9 +128,12 @@
    where the computed value is farther from its threshold than an a-priori bound on its error
    (the parallel test, D against the tangent band, each root against the rims, each crossing
    against tmin and tmax, and a start close enough for the final correction, which takes up
-   to six steps where one is not enough); anything closer, and every tangent or parallel
-   contact, go to the compensated solver, with every wall coefficient compensated and the rim
-   decided from the corrected roots (note 7). A crossing whose bound shows it within the t-range
+   to six steps where one is not enough). Near the tangent band the plain D errs by about the
+   band's width, so A, B, C and D are formed again from double words: a crossing that then
+   shows clearly, or a contact certainly inside the band with two roots (corrected like any
+   other), is answered there. Anything closer, a contact without roots (D < 0: the point of
+   closest approach) and every parallel contact go to the compensated solver, with every wall
+   coefficient compensated and the rim decided from the corrected roots (note 7). A crossing whose bound shows it within the t-range
    band of tmin or tmax, 2^-(p−8)·max(|t|, r/|d|) (p = 24, 53), is kept or dropped as the plain
    comparison says: either answer is right there, as for the tangent band. That decides the
    t ≈ 0 crossing of a secondary ray (an origin on the surface, tmin = 0) without the solver
@@ -1614,6 +1617,61 @@ CYL__INL CYL__R CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     return CYL__P(fres)(a, d, s, wh, wl, R2, R2l, 0, &G0);
 }
 
+/* CYL_PRECISE near the tangent band (CYL__L is the API's type here): D = r²A − P² (A = |s|²,
+   P = w·s, s = a × d) from the exact w = o − c (fwexact) and s as a double word (cross_dw),
+   summed as Dot2 does, with a bound on its error. The plain D errs by about u·|o − c||s|·|P|,
+   for an origin a few radii away the width of the tangent band itself; this one by 2u of
+   itself and u² of its terms. Where D then shows a crossing (clearly beside the band, or
+   certainly inside it with D > 0), A and B = m·s (m = a × w) follow the same way and it
+   returns 1 (out: A, B, D; err: their bounds); else 0, and the solver answers (a contact
+   without roots, D < 0, is the point of closest approach). The bounds, with ma, md, mw the
+   largest components of a, d and the rounded w (|w_i| <= mw(1 + u)): a component of s's
+   double word leaves at most 12u²·ma·md (dop_dw: its lo sums errors of at most u of the two
+   products with two roundings, and a Fast2Sum), one of m's 22u²·ma·mw (the wl terms add a
+   product and a rounding); Dot2's sums add γ6² of their terms' magnitudes (below
+   40u²·Σ|terms|) and the dropped lo·lo products u² of them; each (r·s_i)² is split exactly up
+   to 8u² of itself, and P² comes from P's double word. Every constant below covers its sum by
+   a factor of two or more. Out of line: only a contact near the band calls it. */
+CYL__SLOW int CYL__P(fcomp)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                            const CYL__R a[3], const CYL__R d[3], CYL__R r, const CYL__R lf[2],
+                            CYL__R mw, CYL__R ma, CYL__R md, CYL__R band, CYL__R out[3],
+                            CYL__R err[3])
+{
+    const CYL__R u = CYL__U, tiny = CYL__MINR, zero[3] = {0, 0, 0};
+    const CYL__R sf = (CYL__R)1 + (CYL__R)1 / 64;
+    CYL__R wh[3], wl[3], sh[3], sl[3], mh[3], ml[3], Ph, Pl, S2 = ma * ma * md * md, eP, A, D, eD;
+    CYL__P(acc) sa, sp, sb, sd;
+    int i;
+    CYL__P(fwexact)(ray, cyl, lf, wh, wl);
+    CYL__P(cross_dw)(a, d, zero, sh, sl);
+    sa.hi = sa.lo = sp.hi = sp.lo = sb.hi = sb.lo = sd.hi = sd.lo = 0;
+    CYL__P(acc_dot_dw)(&sa, sh, sl, sh, sl);
+    A = sa.hi + sa.lo;
+    CYL__P(acc_dot_dw)(&sp, wh, wl, sh, sl);
+    CYL__P(acc_split)(sp, &Ph, &Pl);
+    for (i = 0; i < 3; i++) {
+        CYL__R rs = r * sh[i], rsl = CYL__FMAR(r, sh[i], -rs);
+        CYL__P(acc_prod)(&sd, rs, rs);
+        sd.lo += 2 * rs * (rsl + r * sl[i]);
+    }
+    CYL__P(acc_prod)(&sd, -Ph, Ph);
+    sd.lo -= 2 * Ph * Pl;
+    D = sd.hi + sd.lo;
+    eP = 256 * u * u * mw * ma * md + tiny;
+    eD = (2 * u * CYL__P(abs)(D) + 256 * u * u * (r * r * (A + 16 * S2) + Ph * Ph) +
+          2 * CYL__P(abs)(Ph) * eP + eP * eP) * sf + tiny;
+    if (!(D < -band - eD) && !(D > band + eD) && !(D - eD > 0 && D + eD < band)) return 0;
+    CYL__P(cross_dw)(a, wh, wl, mh, ml);
+    CYL__P(acc_dot_dw)(&sb, mh, ml, sh, sl);
+    out[0] = A;
+    out[1] = sb.hi + sb.lo;
+    out[2] = D;
+    err[0] = (2 * u * A + 256 * u * u * S2) * sf + tiny;
+    err[1] = (2 * u * CYL__P(abs)(out[1]) + 1024 * u * u * ma * ma * mw * md) * sf + tiny;
+    err[2] = eD;
+    return 1;
+}
+
 /* A wall root to about an ulp: refine's exact-quadratic step on the residual of fres, which
    forms y from the crossing point with one double-word cross product (refine's from m and s
    takes two). The plain root loses ulps where |o − c| is far above r or where the
@@ -1832,6 +1890,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     CYL__P(fx) c[2];
     int i, k, caps = (opts & CYL_CAPS) != 0, hfin = cyl->h <= CYL__MAXR, tangent = 0;
     int parallel, scaled = 0, ce = (opts & CYL_PRECISE) != 0;
+    int comp = 0; /* CYL_PRECISE near the tangent band: A, B, C, D from double words */
 
     for (i = 0; i < 3; i++) {
         a[i] = (CYL__L)cyl->a[i];
@@ -1910,25 +1969,42 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     c[0].t = c[1].t = c[0].et = c[1].et = 0;
     if (!parallel) {
         CYL__L r2 = r * r, band, ta, tb, P, D, B, C, Dp, q, tw[2], eD = 0, esq = 0;
-        int swap, cx = 0; /* cx: C from the exact o − c */
+        CYL__L Bc = 0, eBc = 0; /* B from double words (comp) and its bound */
+        int swap, cx = 0;       /* cx: C from the exact o − c */
         /* D = r²A − P² = A(r² − ρ²), P = w·s: the wall is crossed iff D >= 0 */
         P = CYL__P(ldot)(w, s);
         D = CYL__LMADD(r2, A, -(P * P));
         band = (CYL__L)CYL__TANG * r2 * A;
         if (ce) {
-            /* certified: beside, or clearly crossed; a contact near the tangent band (either
-               side of it) goes to the solver, whose compensated D gives its crossings to
-               about an ulp (the plain D errs by about the band's width) */
+            /* certified: beside, or clearly crossed. Near the tangent band (either side of
+               it) the plain D errs by about the band's width: A, B and D again from double
+               words (fcomp; C from the exact o − c, fc0, below), and a contact certainly inside
+               the band with two roots is answered here too, its roots corrected like any other;
+               what fcomp cannot decide, and a contact without roots, go to the solver. */
             CYL__L eP = 3 * mw * (4 * u * ms + (1 + u) * es) + tiny;
             eD = (r2 * (3 * u * A + eA) + (3 * u * CYL__P(labs)(P) + 2 * eP) *
                   (CYL__P(labs)(P) + eP) + u * CYL__P(labs)(D)) * sf + tiny;
-            if (!(D < -band - eD) && !(D > band + eD)) return -1;
+            if (!(D < -band - eD) && !(D > band + eD)) {
+#if !CYL__WIDE
+                CYL__L cv[3], cerr[3];
+                if (!CYL__P(fcomp)(ray, cyl, a, d, r, lf, mw, ma, md, band, cv, cerr)) return -1;
+                A = cv[0];
+                eA = cerr[0];
+                Bc = cv[1];
+                eBc = cerr[1];
+                D = cv[2];
+                eD = cerr[2];
+                comp = 1;
+#else
+                return -1;
+#endif
+            }
         }
         if (D >= -band) {
             tangent = D <= band;
             if (!tangent || !(opts & CYL_NO_TANGENT)) {
                 /* roots of A t² + 2B t + C, B = m·s, C = |m|² − r²|a|², B² − AC = |a|²D */
-                B = CYL__P(ldot)(m, s);
+                B = comp ? Bc : CYL__P(ldot)(m, s);
                 C = MM - R2;
                 Dp = D > 0 ? D : 0;
                 sq = CYL__LSQRT(aa * Dp);
@@ -1936,7 +2012,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                 if (!(CYL__P(labs)(q) >= tiny)) return -1; /* a contact where B = D = 0 */
                 ta = q / A;
                 tb = C / q;
-                if (CYL__P(labs)(C) <= 64 * u * (MM + R2) ||
+                if (comp || CYL__P(labs)(C) <= 64 * u * (MM + R2) ||
                     CYL__P(cnear)(tb, CYL__LMADD(tb, ad, aw), q, 16 * u * (3 * aa * mw * mw + R2),
                                   ad, hfin ? Hn : (CYL__L)CYL__LMAX * 2, 1, tsc,
                                   (CYL__L)ray->tmin, (CYL__L)ray->tmax)) {
@@ -1956,7 +2032,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                     /* the roots' bounds: q' = −(B + sgn(B̂)√(|a|²D)) exact, |q − q'| <= eq,
                        t = q/A or C/q (1/(x(1 − ε)) <= (1 + 2ε)/x for ε <= 1/4) */
                     CYL__L eB, eC, aq = CYL__P(labs)(q), rq, rA = eA / A, g, e0, e1;
-                    eB = 6 * ma * mw * (6 * u * ms + 2 * es) + tiny;
+                    eB = comp ? eBc : 6 * ma * mw * (6 * u * ms + 2 * es) + tiny;
                     /* C from fres carries u of itself and u² of |m|², r²|a|² and |a|²|o − c|²
                        (<= 9 ma² mw²), over-covered here */
                     eC = cx ? 2 * u * CYL__P(labs)(C) +
@@ -2087,7 +2163,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                 CYL__R tr;
                 tu = t * tsc;
 #if !CYL__WIDE
-                if (x->steps && (x->sg || !tangent)) {
+                if (x->steps && (x->sg || !tangent || comp)) {
                     /* the crossing to an ulp, kept in the accepted range */
                     t = x->sg ? CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg)
                               : CYL__P(fref)(ray, cyl, a, d, s, r, lf, A, sq, t, sel[i], x->steps);
