@@ -130,10 +130,11 @@
    against tmin and tmax, and a start close enough for the final correction, which takes up
    to six steps where one is not enough). Near the tangent band the plain D errs by about the
    band's width, so A, B, C and D are formed again from double words: a crossing that then
-   shows clearly, or a contact certainly inside the band with two roots (corrected like any
-   other), is answered there. Anything closer, a contact without roots (D < 0: the point of
-   closest approach) and every parallel contact go to the compensated solver, with every wall
-   coefficient compensated and the rim decided from the corrected roots (note 7). A crossing whose bound shows it within the t-range
+   shows clearly, or a contact certainly inside the band, is answered there (two roots,
+   corrected like any other; or none, D < 0, and both ends at the point of closest approach
+   −B/A, as the solver gives them). Anything closer, and every parallel contact, go to the
+   compensated solver, with every wall coefficient compensated and the rim decided from the
+   corrected roots (note 7). A crossing whose bound shows it within the t-range
    band of tmin or tmax, 2^-(p−8)·max(|t|, r/|d|) (p = 24, 53), is kept or dropped as the plain
    comparison says: either answer is right there, as for the tangent band. That decides the
    t ≈ 0 crossing of a secondary ray (an origin on the surface, tmin = 0) without the solver
@@ -1621,10 +1622,10 @@ CYL__INL CYL__R CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
    P = w·s, s = a × d) from the exact w = o − c (fwexact) and s as a double word (cross_dw),
    summed as Dot2 does, with a bound on its error. The plain D errs by about u·|o − c||s|·|P|,
    for an origin a few radii away the width of the tangent band itself; this one by 2u of
-   itself and u² of its terms. Where D then shows a crossing (clearly beside the band, or
-   certainly inside it with D > 0), A and B = m·s (m = a × w) follow the same way and it
-   returns 1 (out: A, B, D; err: their bounds); else 0, and the solver answers (a contact
-   without roots, D < 0, is the point of closest approach). The bounds, with ma, md, mw the
+   itself and u² of its terms. Where D then decides (clearly beside the band, or certainly
+   inside it with its sign certain: two roots, or none and a contact at the point of closest
+   approach), A and B = m·s (m = a × w) follow the same way and it returns 1 (out: A, B, D;
+   err: their bounds); else 0, and the solver answers. The bounds, with ma, md, mw the
    largest components of a, d and the rounded w (|w_i| <= mw(1 + u)): a component of s's
    double word leaves at most 12u²·ma·md (dop_dw: its lo sums errors of at most u of the two
    products with two roundings, and a Fast2Sum), one of m's 22u²·ma·mw (the wl terms add a
@@ -1660,7 +1661,9 @@ CYL__SLOW int CYL__P(fcomp)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     eP = 256 * u * u * mw * ma * md + tiny;
     eD = (2 * u * CYL__P(abs)(D) + 256 * u * u * (r * r * (A + 16 * S2) + Ph * Ph) +
           2 * CYL__P(abs)(Ph) * eP + eP * eP) * sf + tiny;
-    if (!(D < -band - eD) && !(D > band + eD) && !(D - eD > 0 && D + eD < band)) return 0;
+    if (!(D < -band - eD) && !(D > band + eD) && !(D - eD > 0 && D + eD < band) &&
+        !(D + eD < 0 && D - eD > -band))
+        return 0;
     CYL__P(cross_dw)(a, wh, wl, mh, ml);
     CYL__P(acc_dot_dw)(&sb, mh, ml, sh, sl);
     out[0] = A;
@@ -2025,6 +2028,9 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                     cx = 1;
                     tb = C / q;
                 }
+                /* a contact without roots (CYL_PRECISE near the band, D < 0): both ends at the
+                   point of closest approach −B/A, as the solver gives it */
+                if (comp && !(sq > 0)) tb = ta;
                 swap = ta > tb;
                 tw[0] = swap ? tb : ta;
                 tw[1] = swap ? ta : tb;
@@ -2039,13 +2045,14 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                                   64 * u * u * (MM + R2 + 9 * ma * ma * mw * mw) + tiny
                             : 3 * u * MM + em * (12 * ma * mw + 3 * em) + 7 * u * R2 +
                                   u * CYL__P(labs)(C) + tiny;
-                    esq = aa * (eD + 4 * u * Dp) / sq + u * sq;
+                    esq = comp && !(sq > 0) ? 0 : aa * (eD + 4 * u * Dp) / sq + u * sq;
                     rq = (eB + esq + u * (sq + aq)) / aq;
                     if (!(rq < (CYL__L)0.25)) return -1;
                     g = rq * (1 + 2 * rq) + rA * (1 + 2 * rA) + u;
                     e0 = CYL__P(labs)(ta) * g * (1 + 2 * rA) * (1 + 2 * g) * sf;
                     e1 = ((eC / aq + CYL__P(labs)(tb) * rq) * (1 + 2 * rq) + u * CYL__P(labs)(tb)) *
                          sf;
+                    if (comp && !(sq > 0)) e1 = e0; /* the contact: t = q/A at both ends */
                     c[0].et = swap ? e1 : e0;
                     c[1].et = swap ? e0 : e1;
                 }
@@ -2063,7 +2070,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                        up to CYL__STEPS steps (two roots a few √ errors apart converge slowly:
                        grazing rays just inside the tube), then the solver (a root that gives
                        way to a cap plane is not corrected at all) */
-                    if (ce && !c[k].sg) {
+                    if (ce && !c[k].sg && sq > 0) {
                         CYL__L at = CYL__P(labs)(tw[k]), lim = (CYL__L)0.25 * u * sq * (at * md + r),
                                e1 = c[k].et;
                         while (!(e1 * esq * md <= lim)) {
@@ -2163,7 +2170,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                 CYL__R tr;
                 tu = t * tsc;
 #if !CYL__WIDE
-                if (x->steps && (x->sg || !tangent || comp)) {
+                if (x->steps && (x->sg || !tangent || (comp && sq > 0))) {
                     /* the crossing to an ulp, kept in the accepted range */
                     t = x->sg ? CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg)
                               : CYL__P(fref)(ray, cyl, a, d, s, r, lf, A, sq, t, sel[i], x->steps);
