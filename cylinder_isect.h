@@ -221,11 +221,11 @@
    misclassification beyond the band in any family in either API (the target is the benign
    ones), t within 0.5 ulps on the well-conditioned hits of the benign families in both;
    CYL_PRECISE: none beyond the band in any family, 0.5 ulps. Time per call there (each
-   variant inlined with its options folded): float 96 ns (precise 97), double 133 ns (precise
-   202), against 59 / 50 ns for the end-point formulation and 68 / 80 ns for the literal one (a
+   variant inlined with its options folded): float 97 ns (precise 98), double 141 ns (precise
+   216), against 64 / 53 ns for the end-point formulation and 76 / 84 ns for the literal one (a
    shared machine: compare within one run); those two misclassify 18,787 / 14,644 and
    19,839 / 10,278 cases beyond the band. Without t_err and the normal the float path takes
-   74 ns, the double one 117 ns; `make insn` counts the instructions per call.
+   77 ns, the double one 123 ns; `make insn` counts the instructions per call.
    Extreme ratios: when r is below 2^-31 (float computed in float) or 2^-435 (double, and so
    out of reach of float inputs computed in double) of |o − c|, r² underflows in the frame:
    the wall test then compares distances linearly, may misjudge rays within the rounding of
