@@ -1982,8 +1982,8 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
             /* certified: beside, or clearly crossed. Near the tangent band (either side of
                it) the plain D errs by about the band's width: A, B and D again from double
                words (fcomp; C from the exact o − c, fc0, below), and a contact certainly inside
-               the band with two roots is answered here too, its roots corrected like any other;
-               what fcomp cannot decide, and a contact without roots, go to the solver. */
+               the band is answered here too (DEFAULT PATH AND PRECISE TIER); what fcomp cannot
+               decide goes to the solver. */
             CYL__L eP = 3 * mw * (4 * u * ms + (1 + u) * es) + tiny;
             eD = (r2 * (3 * u * A + eA) + (3 * u * CYL__P(labs)(P) + 2 * eP) *
                   (CYL__P(labs)(P) + eP) + u * CYL__P(labs)(D)) * sf + tiny;
@@ -2015,15 +2015,18 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                 if (!(CYL__P(labs)(q) >= tiny)) return -1; /* a contact where B = D = 0 */
                 ta = q / A;
                 tb = C / q;
-                if (comp || CYL__P(labs)(C) <= 64 * u * (MM + R2) ||
-                    CYL__P(cnear)(tb, CYL__LMADD(tb, ad, aw), q, 16 * u * (3 * aa * mw * mw + R2),
-                                  ad, hfin ? Hn : (CYL__L)CYL__LMAX * 2, 1, tsc,
-                                  (CYL__L)ray->tmin, (CYL__L)ray->tmax)) {
+                if (comp ? sq > 0
+                         : (CYL__P(labs)(C) <= 64 * u * (MM + R2) ||
+                            CYL__P(cnear)(tb, CYL__LMADD(tb, ad, aw), q,
+                                          16 * u * (3 * aa * mw * mw + R2), ad,
+                                          hfin ? Hn : (CYL__L)CYL__LMAX * 2, 1, tsc,
+                                          (CYL__L)ray->tmin, (CYL__L)ray->tmax))) {
                     /* an origin on the surface within the roundings (a secondary ray), or a
                        root C/q that C's rounding could move across a rim or an end of the t
                        range: C from the exact o − c (fc0), so that the crossing near t = 0 is
                        known to about u of itself for the rim and, in CYL_PRECISE, against
-                       tmin = 0 without the solver */
+                       tmin = 0 without the solver; near the tangent band in CYL_PRECISE (comp)
+                       always, unless there are no roots */
                     C = CYL__P(fc0)(ray, cyl, a, d, s, r, lf);
                     cx = 1;
                     tb = C / q;
