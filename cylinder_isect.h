@@ -778,6 +778,24 @@ CYL__INL void CYL__P(acc_dot_dw)(CYL__P(acc) *s, const CYL__R xh[3], const CYL__
              (xh[2] * yl[2] + xl[2] * yh[2]);
 }
 
+/* D = r²|s|² − P² as one compensated sum, from s = sh + sl and P = Ph + Pl as double words:
+   each (r·s_i)² split exactly up to O(u²) of itself, P² from P's double word. */
+CYL__INL CYL__R CYL__P(disc_dw)(CYL__R r, const CYL__R sh[3], const CYL__R sl[3], CYL__R Ph,
+                               CYL__R Pl)
+{
+    CYL__P(acc) sd;
+    int i;
+    sd.hi = sd.lo = 0;
+    for (i = 0; i < 3; i++) {
+        CYL__R rs = r * sh[i], rsl = CYL__FMAR(r, sh[i], -rs);
+        CYL__P(acc_prod)(&sd, rs, rs);
+        sd.lo += 2 * rs * (rsl + r * sl[i]);
+    }
+    CYL__P(acc_prod)(&sd, -Ph, Ph);
+    sd.lo -= 2 * Ph * Pl;
+    return sd.hi + sd.lo;
+}
+
 /* ------------------------------------------------------------------ validation */
 
 CYL__INL int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl)
@@ -969,11 +987,11 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2],
     int clamped = 0;
 #ifndef CYL_NO_PRECISE
     if (f->precise) {
-        CYL__P(acc) sp, sb, sc, sd;
+        CYL__P(acc) sp, sb, sc;
         CYL__R Pl;
         int i;
         CYL__P(cross_dw)(f->a, f->w, f->wl, f->m, f->ml);
-        sp.hi = sp.lo = sb.hi = sb.lo = sc.hi = sc.lo = sd.hi = sd.lo = 0;
+        sp.hi = sp.lo = sb.hi = sb.lo = sc.hi = sc.lo = 0;
         CYL__P(acc_dot_dw)(&sp, f->w, f->wl, f->s, f->sl);
         CYL__P(acc_split)(sp, &P, &Pl);
         CYL__P(acc_dot_dw)(&sb, f->m, f->ml, f->s, f->sl);
@@ -982,17 +1000,12 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2],
            word (wallc), which the root refinement keeps. */
         for (i = 0; i < 3; i++) {
             CYL__R ra = f->r * f->a[i], ral = CYL__FMAR(f->r, f->a[i], -ra);
-            CYL__R rs = f->r * f->s[i], rsl = CYL__FMAR(f->r, f->s[i], -rs);
             CYL__P(acc_prod)(&sc, ra, ra);
             sc.lo += 2 * ra * ral;
-            CYL__P(acc_prod)(&sd, rs, rs);
-            sd.lo += 2 * rs * (rsl + f->r * f->sl[i]);
         }
         CYL__P(acc_split)(sc, &f->R2, &f->R2l);
         C = CYL__P(wallc)(f, f->R2, f->R2l);
-        CYL__P(acc_prod)(&sd, -P, P); /* P² from the double word P: e to O(u²) */
-        sd.lo -= 2 * P * Pl;
-        D = sd.hi + sd.lo;
+        D = CYL__P(disc_dw)(f->r, f->s, f->sl, P, Pl); /* e to O(u²) */
     } else
 #endif
     {
@@ -1641,23 +1654,15 @@ CYL__SLOW int CYL__P(fcomp)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     const CYL__R u = CYL__U, tiny = CYL__MINR, zero[3] = {0, 0, 0};
     const CYL__R sf = (CYL__R)1 + (CYL__R)1 / 64;
     CYL__R wh[3], wl[3], sh[3], sl[3], mh[3], ml[3], Ph, Pl, S2 = ma * ma * md * md, eP, A, D, eD;
-    CYL__P(acc) sa, sp, sb, sd;
-    int i;
+    CYL__P(acc) sa, sp, sb;
     CYL__P(fwexact)(ray, cyl, lf, wh, wl);
     CYL__P(cross_dw)(a, d, zero, sh, sl);
-    sa.hi = sa.lo = sp.hi = sp.lo = sb.hi = sb.lo = sd.hi = sd.lo = 0;
+    sa.hi = sa.lo = sp.hi = sp.lo = sb.hi = sb.lo = 0;
     CYL__P(acc_dot_dw)(&sa, sh, sl, sh, sl);
     A = sa.hi + sa.lo;
     CYL__P(acc_dot_dw)(&sp, wh, wl, sh, sl);
     CYL__P(acc_split)(sp, &Ph, &Pl);
-    for (i = 0; i < 3; i++) {
-        CYL__R rs = r * sh[i], rsl = CYL__FMAR(r, sh[i], -rs);
-        CYL__P(acc_prod)(&sd, rs, rs);
-        sd.lo += 2 * rs * (rsl + r * sl[i]);
-    }
-    CYL__P(acc_prod)(&sd, -Ph, Ph);
-    sd.lo -= 2 * Ph * Pl;
-    D = sd.hi + sd.lo;
+    D = CYL__P(disc_dw)(r, sh, sl, Ph, Pl);
     eP = 256 * u * u * mw * ma * md + tiny;
     eD = (2 * u * CYL__P(abs)(D) + 256 * u * u * (r * r * (A + 16 * S2) + Ph * Ph) +
           2 * CYL__P(abs)(Ph) * eP + eP * eP) * sf + tiny;
