@@ -89,6 +89,9 @@ endif
 export CYL_DEPS_DONE := 1
 endif
 endif
+# Runners built with -mfma run only where this machine executes FMA3 (x86-64): mk/bench.mk,
+# mk/fuzz.mk and mk/tests.mk add them when HOST_FMA is 1.
+HOST_FMA := $(shell grep -qw fma /proc/cpuinfo 2>/dev/null && test "$$(uname -m)" = x86_64 && echo 1)
 -include mk/*.mk
 
 .PHONY: test deps

@@ -54,7 +54,7 @@ $(BENCH_BUILD)/test_accuracy_fma: bench/test_accuracy.c $(BENCH_SRCS) $(BENCH_HD
 	$(GCC) $(WARN_C) -O2 -mfma $(UNITY_FLAGS) $(BENCH_INC) $< $(BENCH_SRCS) -x none $(BENCH_BUILD)/unity.o $(BENCH_LIBS) -o $@
 
 RUNNERS      += $(BENCH_BUILD)/test_accuracy $(BENCH_BUILD)/test_accuracy_narrow
-ifeq ($(shell grep -qw fma /proc/cpuinfo 2>/dev/null && test "$$(uname -m)" = x86_64 && echo 1),1)
+ifeq ($(HOST_FMA),1)
 RUNNERS      += $(BENCH_BUILD)/test_accuracy_fma
 endif
 TEST_PREREQS += $(BENCH_BUILD)/alt_check.stamp $(BENCH_BUILD)/bench

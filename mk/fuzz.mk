@@ -126,7 +126,7 @@ $(FUZZ_DIR)/test_fuzz_regressions_gnu: fuzz/test_fuzz_regressions.c $(FUZZ_HDRS)
 
 FUZZ_RUNNERS := $(FUZZ_DIR)/replay-gcc $(FUZZ_DIR)/replay-noprecise $(FUZZ_DIR)/replay-asan \
                 $(FUZZ_DIR)/test_fuzz_regressions
-ifeq ($(shell grep -qw fma /proc/cpuinfo 2>/dev/null && test "$$(uname -m)" = x86_64 && echo 1),1)
+ifeq ($(HOST_FMA),1)
 FUZZ_RUNNERS += $(FUZZ_DIR)/test_fuzz_regressions_gnu
 endif
 RUNNERS += $(FUZZ_RUNNERS)
