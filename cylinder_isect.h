@@ -1898,7 +1898,8 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     CYL__P(fx) c[2];
     int i, k, caps = (opts & CYL_CAPS) != 0, hfin = cyl->h <= CYL__MAXR, tangent = 0;
     int parallel, scaled = 0, ce = (opts & CYL_PRECISE) != 0;
-    int comp = 0; /* CYL_PRECISE near the tangent band: A, B, C, D from double words */
+    int comp = 0;    /* CYL_PRECISE near the tangent band: A, B, C, D from double words */
+    int noroots = 0; /* ... and a contact without roots there (D < 0): both ends at −B/A */
 
     for (i = 0; i < 3; i++) {
         a[i] = (CYL__L)cyl->a[i];
@@ -2016,11 +2017,12 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                 C = MM - R2;
                 Dp = D > 0 ? D : 0;
                 sq = CYL__LSQRT(aa * Dp);
+                noroots = comp && !(sq > 0);
                 q = -(B + (B < 0 ? -sq : sq));
                 if (!(CYL__P(labs)(q) >= tiny)) return -1; /* a contact where B = D = 0 */
                 ta = q / A;
                 tb = C / q;
-                if (comp ? sq > 0
+                if (comp ? !noroots
                          : (CYL__P(labs)(C) <= 64 * u * (MM + R2) ||
                             CYL__P(cnear)(tb, CYL__LMADD(tb, ad, aw), q,
                                           16 * u * (3 * aa * mw * mw + R2), ad,
@@ -2038,7 +2040,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                 }
                 /* a contact without roots (CYL_PRECISE near the band, D < 0): both ends at the
                    point of closest approach −B/A, as the solver gives it */
-                if (comp && !(sq > 0)) tb = ta;
+                if (noroots) tb = ta;
                 swap = ta > tb;
                 tw[0] = swap ? tb : ta;
                 tw[1] = swap ? ta : tb;
@@ -2053,14 +2055,14 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                                   64 * u * u * (MM + R2 + 9 * ma * ma * mw * mw) + tiny
                             : 3 * u * MM + em * (12 * ma * mw + 3 * em) + 7 * u * R2 +
                                   u * CYL__P(labs)(C) + tiny;
-                    esq = comp && !(sq > 0) ? 0 : aa * (eD + 4 * u * Dp) / sq + u * sq;
+                    esq = noroots ? 0 : aa * (eD + 4 * u * Dp) / sq + u * sq;
                     rq = (eB + esq + u * (sq + aq)) / aq;
                     if (!(rq < (CYL__L)0.25)) return -1;
                     g = rq * (1 + 2 * rq) + rA * (1 + 2 * rA) + u;
                     e0 = CYL__P(labs)(ta) * g * (1 + 2 * rA) * (1 + 2 * g) * sf;
                     e1 = ((eC / aq + CYL__P(labs)(tb) * rq) * (1 + 2 * rq) + u * CYL__P(labs)(tb)) *
                          sf;
-                    if (comp && !(sq > 0)) e1 = e0; /* the contact: t = q/A at both ends */
+                    if (noroots) e1 = e0; /* the contact: t = q/A at both ends */
                     c[0].et = swap ? e1 : e0;
                     c[1].et = swap ? e0 : e1;
                 }
@@ -2078,7 +2080,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                        up to CYL__STEPS steps (two roots a few √ errors apart converge slowly:
                        grazing rays just inside the tube), then the solver (a root that gives
                        way to a cap plane is not corrected at all) */
-                    if (ce && !c[k].sg && sq > 0) {
+                    if (ce && !c[k].sg && !noroots) {
                         CYL__L at = CYL__P(labs)(tw[k]), lim = (CYL__L)0.25 * u * sq * (at * md + r),
                                e1 = c[k].et;
                         while (!(e1 * esq * md <= lim)) {
@@ -2178,7 +2180,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                 CYL__R tr;
                 tu = t * tsc;
 #if !CYL__WIDE
-                if (x->steps && (x->sg || !tangent || (comp && sq > 0))) {
+                if (x->steps && (x->sg || !tangent || (comp && !noroots))) {
                     /* the crossing to an ulp, kept in the accepted range */
                     t = x->sg ? CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg)
                               : CYL__P(fref)(ray, cyl, a, d, s, r, lf, A, sq, t, sel[i], x->steps);

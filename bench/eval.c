@@ -20,11 +20,12 @@ static double ev_now(void)
 /* One call and one timing loop per (variant, caps), each with constant options. gcc inlines
  * a static function called from one place (a user's render loop), but this file calls each
  * entry point from 20 places, and there gcc keeps it out of line with the options as run-time
- * values: nothing folded, and every variant ran the same code (seen in the disassembly up to
- * 85d4d6d). `flatten` inlines into each timing loop what the loop calls, as at a user's single
+ * values: nothing folded, and every variant ran the same code (gcc 12 -O2, up to 85d4d6d).
+ * `flatten` inlines into each timing loop what the loop calls, as at a user's single
  * call site; what the header keeps out of line (noinline: the solver, the hand-overs) stays
- * out of line. The accuracy calls need no inlining. Only the benchmark (EV_TIMING) times:
- * the accuracy test's builds of this file skip the inlining (6.5 s against 17 s of gcc here). */
+ * out of line. The accuracy calls need no inlining. Only the benchmark and `make insn`
+ * (EV_TIMING) time: the accuracy test's builds of this file skip the inlining, which more than
+ * doubles the file's compile time. */
 #if (defined(__GNUC__) || defined(__clang__)) && defined(EV_TIMING)
 #define EV_FLATTEN __attribute__((flatten))
 #else
