@@ -319,6 +319,108 @@ static void check_precise_trange_grazing(int prec)
 static void test_precise_trange_grazing_float(void) { check_precise_trange_grazing(24); }
 static void test_precise_trange_grazing_double(void) { check_precise_trange_grazing(53); }
 
+/* CYL_PRECISE on grazing rays built one by one around the tangent band: axis z, r = 1, the
+ * ray's closest approach to the axis at ρ = 1 + σ·10^-k (σ = ±1, k = 2 .. 15 in double, 2 .. 8
+ * in float), so e = 1 − ρ²/r² runs from well outside the band to inside it on both sides.
+ * These pin the tier's paths that the family samples only reach by chance: a contact inside
+ * the band decided and answered from double-word coefficients (two roots, or none and both
+ * ends at the point of closest approach), and a crossing whose start one step with the plain
+ * √(|a|²D) cannot correct (the step with √ from its own residual, or more steps). Against the
+ * exact reference: the same count, parts and crossings wherever the margin exceeds the band;
+ * t_err contains the exact t; and t within INBAND_ULPS_MAX ulps of it on every hit, contacts
+ * inside the band included (the plain D, which errs by about the band's width, leaves those
+ * about 10^8 ulps off in double and 10^3 in float). */
+#define INBAND_ULPS_MAX 4.0  /* a root or −B/A from coefficients good to about 2u, rounded */
+
+/* x rounded to float, through memory: gcc 12.2 -O2 dropped the conversions of the plain
+   (double)(float) round trip in the loop below, vectorized with its neighbours (SLP; not with
+   -fno-tree-slp-vectorize), so the reference saw the unrounded case */
+static double to_float(double x)
+{
+    volatile float f = (float)x;
+    return (double)f;
+}
+
+static void near_band_case(int prec, double rho, double th, double sd, double v0, unsigned opts,
+                           int *checked, int *inband, int *bad, size_t *len)
+{
+    const double c[3] = {0.25, -0.5, 0.125}, a[3] = {0, 0, 2}, r = 1, h = 3;
+    double dn[3] = {0, sin(th), cos(th)}, o[3], band = ldexp(1.0, -(prec - 8)), t[2] = {0, 0};
+    double te[2] = {0, 0};
+    cyl_ref_case in;
+    cyl_ref_result rr;
+    int j, n, part[2] = {0, 0}, wrong = 0;
+    unsigned fl[2] = {0u, 0u};
+    for (j = 0; j < 3; ++j) o[j] = c[j] + (j == 0 ? rho : 0) + (j == 2 ? v0 : 0) - sd * dn[j];
+    if (prec == 24)
+        for (j = 0; j < 3; ++j) { o[j] = to_float(o[j]); dn[j] = to_float(dn[j]); }
+    memset(&in, 0, sizeof in);
+    for (j = 0; j < 3; ++j) { in.o[j] = o[j]; in.d[j] = dn[j]; in.c[j] = c[j]; in.a[j] = a[j]; }
+    in.tmin = 0; in.tmax = (double)INFINITY; in.r = r; in.h = h; in.opts = opts; in.prec = prec;
+    cyl_ref_intersect(&in, &rr);
+    if (prec == 24) {
+        cylf_ray ray; cylf_cylinder cyl; cylf_hit hs[2];
+        memset(hs, 0, sizeof hs);
+        for (j = 0; j < 3; ++j) {
+            ray.o[j] = (float)o[j]; ray.d[j] = (float)dn[j];
+            cyl.c[j] = (float)c[j]; cyl.a[j] = (float)a[j];
+        }
+        ray.tmin = 0; ray.tmax = (float)INFINITY; cyl.r = (float)r; cyl.h = (float)h;
+        n = cylf_intersect_all(&ray, &cyl, opts, hs);
+        for (j = 0; j < 2; ++j) { t[j] = hs[j].t; te[j] = hs[j].t_err; part[j] = hs[j].part; fl[j] = hs[j].flags; }
+    } else {
+        cyld_ray ray; cyld_cylinder cyl; cyld_hit hs[2];
+        memset(hs, 0, sizeof hs);
+        for (j = 0; j < 3; ++j) { ray.o[j] = o[j]; ray.d[j] = dn[j]; cyl.c[j] = c[j]; cyl.a[j] = a[j]; }
+        ray.tmin = 0; ray.tmax = (double)INFINITY; cyl.r = r; cyl.h = h;
+        n = cyld_intersect_all(&ray, &cyl, opts, hs);
+        for (j = 0; j < 2; ++j) { t[j] = hs[j].t; te[j] = hs[j].t_err; part[j] = hs[j].part; fl[j] = hs[j].flags; }
+    }
+    (*checked)++;
+    if (fabs(rr.e) <= (prec == 24 ? (double)CYL_TANGENT_TOLF : (double)CYL_TANGENT_TOL)) (*inband)++;
+    if (n != rr.count) wrong = rr.margin > band;
+    for (j = 0; !wrong && j < n && j < rr.count; ++j) {
+        const cyl_ref_hit *x = &rr.hit[j];
+        if (part[j] != x->part || ((fl[j] ^ x->flags) & CYL_F_INSIDE) != 0u) {
+            wrong = rr.margin > band;
+            break;
+        }
+        if (!cyl_ref_t_within(x, t[j], te[j]) || !(fabs(cyl_ref_ulps(x, t[j], prec)) <= INBAND_ULPS_MAX))
+            wrong = 1;
+    }
+    if (!wrong) return;
+    (*bad)++;
+    if (*len < sizeof msg - 200)
+        *len += (size_t)snprintf(msg + *len, sizeof msg - *len,
+                                 "[rho 1%+.0e th %.2f sd %.1f v0 %.2f opts %u: count %d (exact %d), "
+                                 "t %.17g +- %.3g (exact %.17g, %.3g ulps)] ", rho - 1, th, sd, v0,
+                                 opts, n, rr.count, t[0], te[0], rr.hit[0].t[0],
+                                 rr.count > 0 ? cyl_ref_ulps(&rr.hit[0], t[0], prec) : 0.0);
+}
+
+static void check_precise_near_band(int prec)
+{
+    static const double ths[] = {0.3, 0.7, 1.1, 1.4}, sds[] = {3, 5.5, 8}, v0s[] = {-0.7, 0.2, 1.1};
+    int k, sg, ti, si, vi, caps, checked = 0, inband = 0, bad = 0;
+    size_t len = 0;
+    msg[0] = 0;
+    for (k = 2; k <= (prec == 24 ? 8 : 15); ++k)
+        for (sg = -1; sg <= 1; sg += 2)
+            for (ti = 0; ti < 4; ++ti)
+                for (si = 0; si < 3; ++si)
+                    for (vi = 0; vi < 3; ++vi)
+                        for (caps = 0; caps < 2; ++caps)
+                            near_band_case(prec, 1 + sg * pow(10.0, -k), ths[ti], sds[si], v0s[vi],
+                                           CYL_PRECISE | (caps ? CYL_CAPS : 0u), &checked,
+                                           &inband, &bad, &len);
+    /* every k covered; in double k = 14, 15 (and in float 6 .. 8) lie inside the band */
+    TEST_ASSERT_TRUE(inband >= checked / 8);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, bad, msg);
+}
+
+static void test_precise_near_band_float(void) { check_precise_near_band(24); }
+static void test_precise_near_band_double(void) { check_precise_near_band(53); }
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -332,5 +434,7 @@ int main(void)
     RUN_TEST(test_precise_double);
     RUN_TEST(test_precise_trange_grazing_float);
     RUN_TEST(test_precise_trange_grazing_double);
+    RUN_TEST(test_precise_near_band_float);
+    RUN_TEST(test_precise_near_band_double);
     return UNITY_END();
 }
