@@ -127,14 +127,17 @@
    CYL_PRECISE starts on the fast path too, but certifies every decision: each is taken only
    where the computed value is farther from its threshold than an a-priori bound on its error
    (the parallel test, D against the tangent band, each root against the rims, each crossing
-   against tmin and tmax, and a start close enough for the final correction, which takes up
-   to six steps where one is not enough). Near the tangent band the plain D errs by about the
-   band's width, so A, B, C and D are formed again from double words: a crossing that then
-   shows clearly, or a contact certainly inside the band, is answered there (two roots,
-   corrected like any other; or none, D < 0, and both ends at the point of closest approach
-   −B/A, as the solver gives them). Anything closer, and every parallel contact, go to the
-   compensated solver, with every wall coefficient compensated and the rim decided from the
-   corrected roots (note 7). A crossing whose bound shows it within the t-range
+   against tmin and tmax, and a start close enough for the final correction). Where one
+   correction step is not enough (the plain √(|a|²D) errs by about D's error, large near
+   tangency), one step takes √(G² − A·F) from its own residual instead, which errs by about the
+   error of f', and certifies itself by a bound computed after the fact; failing that, up to
+   six steps with the plain √, then the solver. Near the tangent band the plain D errs by
+   about the band's width, so A, B, C and D are formed again from double words: a crossing
+   that then shows clearly, or a contact certainly inside the band, is answered there (two
+   roots, corrected like any other; or none, D < 0, and both ends at the point of closest
+   approach −B/A, as the solver gives them). Anything closer, and every parallel contact, go
+   to the compensated solver, with every wall coefficient compensated and the rim decided
+   from the corrected roots (note 7). A crossing whose bound shows it within the t-range
    band of tmin or tmax, 2^-(p−8)·max(|t|, r/|d|) (p = 24, 53), is kept or dropped as the plain
    comparison says: either answer is right there, as for the tangent band. That decides the
    t ≈ 0 crossing of a secondary ray (an origin on the surface, tmin = 0) without the solver
@@ -358,8 +361,9 @@
 #define CYL_PARALLEL_TOL (1.0 / 9007199254740992.0)           /* 2^-53 */
 #endif
 
-/* CYL_PRECISE's fast path: at most this many exact-quadratic steps from one start, then the
-   solver (a start two steps cannot correct is rare but for grazing rays just inside the tube) */
+/* CYL_PRECISE's fast path: at most this many exact-quadratic steps with the plain √ from one
+   start (where the step with √ from its own residual does not certify itself: rare), then the
+   solver */
 #define CYL__STEPS 6
 #ifdef CYL_NO_PRECISE
 #define CYL__SUPPORTED (CYL_OPTIONS_ALL & ~CYL_PRECISE)
@@ -1503,6 +1507,7 @@ typedef struct CYL__P(fx) { /* one crossing of the fast path */
     int steps;              /* corrections in the output: a wall crossing's exact-quadratic
                                steps (1 to CYL__STEPS); a cap crossing's fcapt (1, or 0: t is
                                already fcapt's) */
+    int resid;              /* CYL_PRECISE: first try one step certified after the fact (frefr) */
 } CYL__P(fx);
 
 CYL__INL CYL__L CYL__P(labs)(CYL__L x) { return CYL__LABS(x); }
@@ -1700,6 +1705,67 @@ CYL__INL CYL__R CYL__P(fref)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
     return t;
 }
 
+/* CYL_PRECISE: one exact-quadratic step from t0 with √(G² − A·F) from its own residual in
+   place of the given √(|a|²D) (the same quantity in exact arithmetic: the discriminant does
+   not depend on the start). Near a root G² dominates it, so it errs by about the error of G
+   (a few u of |y||s|), not by D's, which the plain D leaves large near tangency (where the
+   given √ needs several steps). Certified after the fact: returns 1 with *tout = t0 + δ
+   where the bound below puts t0 + δ, before its rounding, within 0.25u(|t0| + rd) of the
+   root (the steps' target in fast), else 0 (*tout untouched). cb = {rn >= r|a|, max |s_i|,
+   the error of each s_i, max |a_i|, max |w_i|, max |d_i|, the error of A, rd = r/max|d_i|}.
+   The bounds (standard model; y* etc. from the exact data at t0):
+     fres's y (x = w + t0·d as a double word, y = a × x from exact products) is within
+     49u²·ma·X of y* in each component, X = mw + |t0|·md >= max |x_i|, and
+     |y*| <= Ym = (rn + |F|/(2rn))(1 + 8u) (|y*|² = r²|a|² + f*);
+     G = Σ yh_i s_i: |G − G*| <= eG = 2Ym(es + 5u·ms) + 160u²·ma·X·ms (|y|_1 <= √3|y|, yh
+     within u of y, the sum's γ3);
+     F compensated: |F − F*| <= eF = 2u|F| + 192u²·Ym·ma·X + 16u²(Ym² + R2) (2|y|·|δy|, the
+     dropped yl², the sum's u² terms, r²|a|²'s double word);
+     g2 = G² − A·F with a product and an FMA: within E2 = 2|G|eG + eG² + (A + eA)eF + |F|eA
+     + 3u(G² + A|F|) of G*² − A*F* = sq*², so √g2 is within esqn = E2/√g2 + u√g2 of sq*;
+     qstep's form N/A (the start beyond the midpoint; |N| = |G| + √g2): |δ − δ*| <= α + β|δ*|,
+     α = (eG + esqn + u|N|)/A + u|δ|, β = 2eA/A + u; its form F/den (den = √g2 + |G|):
+     α = eF/den + 2u|δ|, β = (esqn + eG)/den;
+   so |δ − δ*| <= (α + β|δ|)/(1 − β) <= (16/15)(α + β|δ|) for β <= 1/16. */
+CYL__INL int CYL__P(frefr)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                          const CYL__R a[3], const CYL__R d[3], const CYL__R s[3], CYL__R r,
+                          const CYL__R lf[2], CYL__R A, CYL__R t0, int upper,
+                          const CYL__R cb[8], CYL__R *tout)
+{
+    const CYL__R u = CYL__U, sf = (CYL__R)1 + (CYL__R)1 / 32, tiny = CYL__MINR;
+    const CYL__R rn = cb[0], ms = cb[1], es = cb[2], ma = cb[3], eA = cb[6];
+    CYL__R wh[3], wl[3], R2, R2l, G, F, g2, sq, aF, aG, X, Ym, eG, eF, E2, esqn, dl, al, be;
+    CYL__P(fwexact)(ray, cyl, lf, wh, wl);
+    CYL__P(fr2)(a, r, &R2, &R2l);
+    F = CYL__P(fres)(a, d, s, wh, wl, R2, R2l, t0, &G);
+    g2 = CYL__FMAR(G, G, -(A * F));
+    if (!(g2 > 0) || !(rn > 0)) return 0;
+    sq = CYL__SQRTR(g2);
+    dl = CYL__P(qstep)(F, G, sq, A, upper);
+    aF = CYL__P(abs)(F);
+    aG = CYL__P(abs)(G);
+    X = cb[4] + CYL__P(abs)(t0) * cb[5];
+    Ym = (rn + (CYL__R)0.5 * aF / rn) * (1 + 8 * u);
+    eG = 2 * Ym * (es + 5 * u * ms) + 160 * u * u * ma * X * ms + tiny;
+    eF = 2 * u * aF + 192 * u * u * Ym * ma * X + 16 * u * u * (Ym * Ym + R2) + tiny;
+    E2 = (eG * (2 * aG + eG) + (A + eA) * eF + aF * eA + 3 * u * (G * G + A * aF)) * sf + tiny;
+    esqn = (E2 / sq + u * sq) * (1 + 2 * u) * sf;
+    if (upper ? G < 0 : G > 0) {
+        al = ((eG + esqn + u * (aG + sq)) / A * (1 + 2 * u) + u * CYL__P(abs)(dl)) * sf;
+        be = (2 * eA / A + u) * sf;
+    } else {
+        CYL__R den = sq + aG;
+        al = (eF / den * (1 + 2 * u) + 2 * u * CYL__P(abs)(dl)) * sf;
+        be = (esqn + eG) / den * (1 + 2 * u) * sf;
+    }
+    if (!(be <= (CYL__R)0.0625) ||
+        !((al + be * CYL__P(abs)(dl)) * (CYL__R)16 / 15 <=
+          (CYL__R)0.25 * u * (CYL__P(abs)(t0) + cb[7])))
+        return 0;
+    *tout = t0 + dl;
+    return 1;
+}
+
 /* A corrected crossing t (frame) kept in [tmin, tmax], in the caller's units (tmin/tsc can be
    subnormal in the frame, fuzz finding 27): sets t and tu = t·tsc, returns what the frame's t
    differs from tu (|t·tsc − tu|, added to the bound). */
@@ -1879,6 +1945,26 @@ CYL__INL int CYL__P(fscale)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     return 0;
 }
 
+/* CYL_PRECISE: how many exact-quadratic steps with sq = √(|a|²D) (within esq of exact) take
+   a start within e of a wall root (at = |start|) to within 0.25u·(at + r/md) of it, or
+   most + 1 where more than most would be needed. The correction solves the exact quadratic
+   around its start with this √: its error is the start's times that of √, which must stay
+   under an ulp of max(|t|, r/|d|) (rays near the axis direction without an FMA start far off,
+   origins far along a thin tube). Where one step is not enough, each leaves at most twice its
+   first-order error e·esq/sq plus its roundings, and the step from there starts with that e
+   (two roots a few √ errors apart converge slowly: grazing rays just inside the tube). */
+CYL__INL int CYL__P(fsteps)(CYL__L e, CYL__L at, CYL__L sq, CYL__L esq, CYL__L md, CYL__L r,
+                           int most)
+{
+    const CYL__L u = CYL__LU, lim = (CYL__L)0.25 * u * sq * (at * md + r);
+    int n = 1;
+    while (n <= most && !(e * esq * md <= lim)) {
+        n++;
+        e = 2 * e * esq / sq + 2 * u * (at + r / md);
+    }
+    return n;
+}
+
 /* want: 0 occluded (returns 1 or 0), 1 the nearest hit into hits[0], 2 every hit.
    Returns -1 (nothing written) when the solver must answer. */
 #if CYL__QUICK && CYL__WIDE
@@ -1892,7 +1978,8 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     const CYL__L u = CYL__LU, sf = (CYL__L)1 + (CYL__L)1 / 64, tiny = CYL__LMIN;
     const CYL__L hi = CYL__LHI, lo = 1 / CYL__LHI;
     CYL__L a[3], d[3], w[3], s[3], m[3], r, H, aa, dd, A, MM, R2, sq = 0;
-    CYL__L aw, ad, na, Hn, tsc = 1, vsc = 1, thr;
+    CYL__L aw, ad, na, Hn, tsc = 1, vsc = 1, thr, r2, P = 0, D = 0, band = 0;
+    CYL__L eD = 0, esq = 0; /* CYL_PRECISE: the bounds on D's and √(|a|²D)'s errors */
     CYL__L mw, ma = 0, md = 0, ms = 0, es = 0, em = 0, eA = 0, eaw = 0, ead = 0, eHn = 0;
     CYL__R lf[2] = {1, 1}; /* the frame's length scale, as two factors */
     CYL__P(fx) c[2];
@@ -1951,10 +2038,6 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         if (hfin && (H + H < hh || H + H > hh)) return -1;
     }
     A = CYL__P(ldot)(s, s);
-    aw = CYL__P(ldot)(a, w);
-    ad = CYL__P(ldot)(a, d);
-    na = CYL__LSQRT(aa);
-    Hn = hfin ? H * na : 0;
     /* sin²(angle) = A / (|a|²|d|²) against the parallel tolerance */
     thr = (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * aa * dd;
     parallel = A <= thr;
@@ -1966,34 +2049,51 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
            roots, a·w, a·d, H|a|. */
         CYL__P(ferr)(a, d, s, mw, &ma, &md, &ms, &es, &em);
         eA = 3 * u * A + es * (6 * ms + 3 * es) + tiny;
-        eaw = 12 * u * ma * mw + tiny;
-        ead = 9 * u * ma * md + tiny;
-        eHn = 4 * u * Hn + tiny;
         /* parallel rays go to the solver (|sin| <= u: rare in double) */
         if (!(A - eA > thr * (1 + 8 * u)) || !(eA < A * (CYL__L)0.25)) return -1;
     }
-    c[0].ok = c[1].ok = 0;
-    c[0].sg = c[1].sg = 0;
-    c[0].steps = c[1].steps = 1;
-    c[0].t = c[1].t = c[0].et = c[1].et = 0;
+    r2 = r * r;
     if (!parallel) {
-        CYL__L r2 = r * r, band, ta, tb, P, D, B, C, Dp, q, tw[2], eD = 0, esq = 0;
-        CYL__L Bc = 0, eBc = 0; /* B from double words (comp) and its bound */
-        int swap, cx = 0;       /* cx: C from the exact o − c */
-        /* D = r²A − P² = A(r² − ρ²), P = w·s: the wall is crossed iff D >= 0 */
+        /* D = r²A − P² = A(r² − ρ²), P = w·s: the wall is crossed iff D >= 0; a ray beside
+           the infinite tube (certainly so, for CYL_PRECISE) misses before anything else is
+           formed */
         P = CYL__P(ldot)(w, s);
         D = CYL__LMADD(r2, A, -(P * P));
         band = (CYL__L)CYL__TANG * r2 * A;
         if (ce) {
-            /* certified: beside, or clearly crossed. Near the tangent band (either side of
-               it) the plain D errs by about the band's width: A, B and D again from double
-               words (fcomp; C from the exact o − c, fc0, below), and a contact certainly inside
-               the band is answered here too (DEFAULT PATH AND PRECISE TIER); what fcomp cannot
-               decide goes to the solver. */
             CYL__L eP = 3 * mw * (4 * u * ms + (1 + u) * es) + tiny;
             eD = (r2 * (3 * u * A + eA) + (3 * u * CYL__P(labs)(P) + 2 * eP) *
                   (CYL__P(labs)(P) + eP) + u * CYL__P(labs)(D)) * sf + tiny;
-            if (!(D < -band - eD) && !(D > band + eD)) {
+        }
+        /* the plain test first (it resolves as soon as D does), then its certification (in
+           CYL_PRECISE; nearly always true, so well predicted) */
+        if (D < -band && D < -band - eD) return 0;
+    }
+    aw = CYL__P(ldot)(a, w);
+    ad = CYL__P(ldot)(a, d);
+    na = CYL__LSQRT(aa);
+    Hn = hfin ? H * na : 0;
+    if (ce) {
+        eaw = 12 * u * ma * mw + tiny;
+        ead = 9 * u * ma * md + tiny;
+        eHn = 4 * u * Hn + tiny;
+    }
+    c[0].ok = c[1].ok = 0;
+    c[0].sg = c[1].sg = 0;
+    c[0].steps = c[1].steps = 1;
+    c[0].resid = c[1].resid = 0;
+    c[0].t = c[1].t = c[0].et = c[1].et = 0;
+    if (!parallel) {
+        CYL__L ta, tb, B, C, Dp, q, tw[2];
+        CYL__L Bc = 0, eBc = 0; /* B from double words (comp) and its bound */
+        int swap, cx = 0;       /* cx: C from the exact o − c */
+        if (ce) {
+            /* certified: beside (above), or clearly crossed. Near the tangent band (either side
+               of it) the plain D errs by about the band's width: A, B and D again from double
+               words (fcomp; C from the exact o − c, fc0, below), and a contact certainly inside
+               the band is answered here too (DEFAULT PATH AND PRECISE TIER); what fcomp cannot
+               decide goes to the solver. */
+            if (!(D > band + eD)) {
 #if !CYL__WIDE
                 CYL__L cv[3], cerr[3];
                 if (!CYL__P(fcomp)(ray, cyl, a, d, r, lf, mw, ma, md, band, cv, cerr)) return -1;
@@ -2071,22 +2171,21 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                     CYL__L vn = CYL__LMADD(tw[k], ad, aw);
                     c[k].sg = !hfin || CYL__P(labs)(vn) <= Hn ? 0 : (vn < 0 ? -1 : 1);
                     c[k].t = tw[k];
-                    /* the correction in the output solves the exact quadratic around its start
-                       with this √(|a|²D): its error is the start's times that of √, which must
-                       stay under an ulp of max(|t|, r/|d|) (rays near the axis direction
-                       without an FMA start far off, origins far along a thin tube). Where one
-                       step is not enough, each leaves at most twice its first-order error
-                       e·esq/sq plus its roundings, and the step from there starts with that e:
-                       up to CYL__STEPS steps (two roots a few √ errors apart converge slowly:
-                       grazing rays just inside the tube), then the solver (a root that gives
-                       way to a cap plane is not corrected at all) */
+                    /* the wall root's correction in the output (a root that gives way to a
+                       cap plane is not corrected at all): steps with this √(|a|²D) as fsteps
+                       counts them; where one is not enough, first one step with √ from its own
+                       residual, which certifies itself (frefr), then those steps, then the
+                       solver */
                     if (ce && !c[k].sg && !noroots) {
-                        CYL__L at = CYL__P(labs)(tw[k]), lim = (CYL__L)0.25 * u * sq * (at * md + r),
-                               e1 = c[k].et;
-                        while (!(e1 * esq * md <= lim)) {
-                            if (++c[k].steps > CYL__STEPS) return -1;
-                            e1 = 2 * e1 * esq / sq + 2 * u * (at + r / md);
-                        }
+#if !CYL__WIDE
+                        /* a flag, not a branch: the bound comes at the end of a long chain */
+                        c[k].resid = CYL__P(fsteps)(c[k].et, CYL__P(labs)(tw[k]), sq, esq, md,
+                                                    r, 1) > 1;
+#else
+                        if (CYL__P(fsteps)(c[k].et, CYL__P(labs)(tw[k]), sq, esq, md, r,
+                                           CYL__STEPS) > CYL__STEPS)
+                            return -1;
+#endif
                     }
                     if (ce && hfin) {
                         CYL__L av = CYL__P(labs)(vn), ev;
@@ -2169,24 +2268,43 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         }
         if (want == 0 || !kept) return kept > 0;
         {
-            /* nothing hands over from here on: the caller's record is written directly */
             CYL__R Hu = cyl->h * CYL__C(0.5);
+            /* the crossings to an ulp, kept in the accepted range, before anything is written
+               (a CYL_PRECISE step that its bound does not certify, with no other, hands over);
+               tdv: |t·tsc − tu| where the frame's t is not exactly tu */
+            CYL__L tt[2] = {0, 0}, tuu[2] = {0, 0}, tdv[2] = {0, 0};
+            for (i = 0; i < kept; i++) {
+                const CYL__P(fx) *x = &c[sel[i]];
+                tt[i] = x->t;
+                tuu[i] = x->t * tsc;
+#if !CYL__WIDE
+                if (x->steps && (x->sg || !tangent || (comp && !noroots))) {
+                    if (x->sg) {
+                        tt[i] = CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg);
+                    } else {
+                        const CYL__L cb[8] = {r * na * (1 + 4 * u), ms, es, ma, mw, md, eA,
+                                              r / md};
+                        if (!x->resid ||
+                            !CYL__P(frefr)(ray, cyl, a, d, s, r, lf, A, x->t, sel[i], cb, &tt[i])) {
+                            int n = x->resid ? CYL__P(fsteps)(x->et, CYL__P(labs)(x->t), sq, esq,
+                                                              md, r, CYL__STEPS)
+                                             : x->steps;
+                            if (n > CYL__STEPS) return -1;
+                            tt[i] = CYL__P(fref)(ray, cyl, a, d, s, r, lf, A, sq, x->t, sel[i], n);
+                        }
+                    }
+                    tdv[i] = CYL__P(fclamp)(ray, tsc, &tt[i], &tuu[i]);
+                }
+#endif
+            }
+            /* nothing hands over from here on: the caller's record is written directly */
             if (Hu + Hu > cyl->h) Hu = (cyl->h - CYL__MINR * 2 * CYL__U) * CYL__C(0.5);
             for (i = 0; i < kept; i++) {
                 const CYL__P(fx) *x = &c[sel[i]];
                 CYL__N(hit) *o = &hits[i];
-                CYL__L t = x->t, tu, nl[3] = {0, 0, 0}, y[3], face = 1, et;
-                CYL__L tdev = 0; /* |t·tsc − tu| where the frame's t is not exactly tu */
+                CYL__L t = tt[i], tu = tuu[i], nl[3] = {0, 0, 0}, y[3], face = 1, et;
+                CYL__L tdev = tdv[i];
                 CYL__R tr;
-                tu = t * tsc;
-#if !CYL__WIDE
-                if (x->steps && (x->sg || !tangent || (comp && !noroots))) {
-                    /* the crossing to an ulp, kept in the accepted range */
-                    t = x->sg ? CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg)
-                              : CYL__P(fref)(ray, cyl, a, d, s, r, lf, A, sq, t, sel[i], x->steps);
-                    tdev = CYL__P(fclamp)(ray, tsc, &t, &tu);
-                }
-#endif
                 tr = (CYL__R)tu;
                 o->t = tr;
                 o->part = x->sg ? (x->sg > 0 ? CYL_CAP_HIGH : CYL_CAP_LOW) : CYL_SIDE;
