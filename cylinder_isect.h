@@ -224,11 +224,12 @@
    misclassification beyond the band in any family in either API (the target is the benign
    ones), t within 0.5 ulps on the well-conditioned hits of the benign families in both;
    CYL_PRECISE: none beyond the band in any family, 0.5 ulps. Time per call there (each
-   variant inlined with its options folded): float 97 ns (precise 98), double 141 ns (precise
-   216), against 64 / 53 ns for the end-point formulation and 76 / 84 ns for the literal one (a
-   shared machine: compare within one run); those two misclassify 18,787 / 14,644 and
+   variant inlined with its options folded): float 84 ns (precise 84), double 113 ns (precise
+   163; at most 1.6x the default path in every family), against 46 / 39 ns for the end-point
+   formulation and 54 / 62 ns for the literal one (a shared machine: compare within one run,
+   and expect the ratios to move between runs); those two misclassify 18,787 / 14,644 and
    19,839 / 10,278 cases beyond the band. Without t_err and the normal the float path takes
-   77 ns, the double one 123 ns; `make insn` counts the instructions per call.
+   63 ns, the double one 104 ns; `make insn` counts the instructions per call.
    Extreme ratios: when r is below 2^-31 (float computed in float) or 2^-435 (double, and so
    out of reach of float inputs computed in double) of |o − c|, r² underflows in the frame:
    the wall test then compares distances linearly, may misjudge rays within the rounding of
@@ -2284,11 +2285,13 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                     } else {
                         const CYL__L cb[8] = {r * na * (1 + 4 * u), ms, es, ma, mw, md, eA,
                                               r / md};
-                        if (!x->resid ||
+                        /* ce first: without CYL_PRECISE all of it folds away */
+                        int rs = ce && x->resid;
+                        if (!rs ||
                             !CYL__P(frefr)(ray, cyl, a, d, s, r, lf, A, x->t, sel[i], cb, &tt[i])) {
-                            int n = x->resid ? CYL__P(fsteps)(x->et, CYL__P(labs)(x->t), sq, esq,
-                                                              md, r, CYL__STEPS)
-                                             : x->steps;
+                            int n = rs ? CYL__P(fsteps)(x->et, CYL__P(labs)(x->t), sq, esq, md, r,
+                                                        CYL__STEPS)
+                                       : x->steps;
                             if (n > CYL__STEPS) return -1;
                             tt[i] = CYL__P(fref)(ray, cyl, a, d, s, r, lf, A, sq, x->t, sel[i], n);
                         }
