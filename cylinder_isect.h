@@ -364,7 +364,7 @@
 
 /* CYL_PRECISE's fast path: at most this many exact-quadratic steps with the plain √ from one
    start (where the step with √ from its own residual does not certify itself: rare), then the
-   solver */
+   solver; fast()'s closed-form test of it (x^6) assumes 6 */
 #define CYL__STEPS 6
 #ifdef CYL_NO_PRECISE
 #define CYL__SUPPORTED (CYL_OPTIONS_ALL & ~CYL_PRECISE)
@@ -1506,8 +1506,8 @@ typedef struct CYL__P(fx) { /* one crossing of the fast path */
     int sg;                 /* wall 0, low cap −1, high cap +1 */
     int ok;                 /* the crossing exists */
     int steps;              /* corrections in the output: a wall crossing's exact-quadratic
-                               steps (1 to CYL__STEPS); a cap crossing's fcapt (1, or 0: t is
-                               already fcapt's) */
+                               steps (1 to CYL__STEPS, or 0: t is already frefr's); a cap
+                               crossing's fcapt (1, or 0: t is already fcapt's) */
     int resid;              /* CYL_PRECISE: first try one step certified after the fact (frefr) */
 } CYL__P(fx);
 
@@ -2175,13 +2175,39 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                     /* the wall root's correction in the output (a root that gives way to a
                        cap plane is not corrected at all): steps with this √(|a|²D) as fsteps
                        counts them; where one is not enough, first one step with √ from its own
-                       residual, which certifies itself (frefr), then those steps, then the
-                       solver */
+                       residual, which certifies itself (frefr), then those steps; where more
+                       than CYL__STEPS would be needed, that step here, else the solver */
                     if (ce && !c[k].sg && !noroots) {
 #if !CYL__WIDE
+                        CYL__L at = CYL__P(labs)(tw[k]), x, x2;
                         /* a flag, not a branch: the bound comes at the end of a long chain */
-                        c[k].resid = CYL__P(fsteps)(c[k].et, CYL__P(labs)(tw[k]), sq, esq, md,
-                                                    r, 1) > 1;
+                        c[k].resid = CYL__P(fsteps)(c[k].et, at, sq, esq, md, r, 1) > 1;
+                        if (c[k].resid) {
+                            /* fsteps' e_n <= x^(n-1)·e_1 + 8L/(1 − x), x = 2·esq/sq, L its
+                               target: x <= 1/32 and x^6·e_1 <= L give n <= 6 = CYL__STEPS. Else
+                               the residual step here, then the counted steps, then the solver,
+                               so that every entry point hands the call over alike (whichever
+                               root it reports); a t from here is final (steps 0) */
+                            x = 2 * esq / sq;
+                            x2 = x * x;
+                            if (!(x <= (CYL__L)0.03125 &&
+                                  x2 * x2 * x2 * c[k].et <= (CYL__L)0.25 * u * (at + r / md))) {
+                                const CYL__L cb[8] = {r * na * (1 + 4 * u), ms, es, ma, mw, md,
+                                                      eA, r / md};
+                                CYL__L tc = tw[k];
+                                c[k].resid = 0;
+                                if (CYL__P(frefr)(ray, cyl, a, d, s, r, lf, A, tw[k], k, cb, &tc)) {
+                                    c[k].t = tc;
+                                    c[k].et += (CYL__L)0.25 * u * (at + r / md) +
+                                               2 * u * CYL__P(labs)(tc);
+                                    c[k].steps = 0;
+                                } else if ((c[k].steps = CYL__P(fsteps)(c[k].et, at, sq, esq, md,
+                                                                        r, CYL__STEPS)) >
+                                           CYL__STEPS) {
+                                    return -1;
+                                }
+                            }
+                        }
 #else
                         if (CYL__P(fsteps)(c[k].et, CYL__P(labs)(tw[k]), sq, esq, md, r,
                                            CYL__STEPS) > CYL__STEPS)
@@ -2269,45 +2295,39 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         }
         if (want == 0 || !kept) return kept > 0;
         {
-            CYL__R Hu = cyl->h * CYL__C(0.5);
-            /* the crossings to an ulp, kept in the accepted range, before anything is written
-               (a CYL_PRECISE step that its bound does not certify, with no other, hands over);
-               tdv: |t·tsc − tu| where the frame's t is not exactly tu */
-            CYL__L tt[2] = {0, 0}, tuu[2] = {0, 0}, tdv[2] = {0, 0};
-            for (i = 0; i < kept; i++) {
-                const CYL__P(fx) *x = &c[sel[i]];
-                tt[i] = x->t;
-                tuu[i] = x->t * tsc;
-#if !CYL__WIDE
-                if (x->steps && (x->sg || !tangent || (comp && !noroots))) {
-                    if (x->sg) {
-                        tt[i] = CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg);
-                    } else {
-                        const CYL__L cb[8] = {r * na * (1 + 4 * u), ms, es, ma, mw, md, eA,
-                                              r / md};
-                        /* ce first: without CYL_PRECISE all of it folds away */
-                        int rs = ce && x->resid;
-                        if (!rs ||
-                            !CYL__P(frefr)(ray, cyl, a, d, s, r, lf, A, x->t, sel[i], cb, &tt[i])) {
-                            int n = rs ? CYL__P(fsteps)(x->et, CYL__P(labs)(x->t), sq, esq, md, r,
-                                                        CYL__STEPS)
-                                       : x->steps;
-                            if (n > CYL__STEPS) return -1;
-                            tt[i] = CYL__P(fref)(ray, cyl, a, d, s, r, lf, A, sq, x->t, sel[i], n);
-                        }
-                    }
-                    tdv[i] = CYL__P(fclamp)(ray, tsc, &tt[i], &tuu[i]);
-                }
-#endif
-            }
             /* nothing hands over from here on: the caller's record is written directly */
+            CYL__R Hu = cyl->h * CYL__C(0.5);
             if (Hu + Hu > cyl->h) Hu = (cyl->h - CYL__MINR * 2 * CYL__U) * CYL__C(0.5);
             for (i = 0; i < kept; i++) {
                 const CYL__P(fx) *x = &c[sel[i]];
                 CYL__N(hit) *o = &hits[i];
-                CYL__L t = tt[i], tu = tuu[i], nl[3] = {0, 0, 0}, y[3], face = 1, et;
-                CYL__L tdev = tdv[i];
+                CYL__L t = x->t, tu, nl[3] = {0, 0, 0}, y[3], face = 1, et;
+                CYL__L tdev = 0; /* |t·tsc − tu| where the frame's t is not exactly tu */
                 CYL__R tr;
+                tu = t * tsc;
+#if !CYL__WIDE
+                if (x->steps && (x->sg || !tangent || (comp && !noroots))) {
+                    /* the crossing to an ulp, kept in the accepted range; CYL_PRECISE first
+                       tries one step with √ from its own residual where one plain step is not
+                       enough (ce first: without it all of this folds away), and where that
+                       step does not certify itself takes the plain steps fsteps counts (the
+                       certification made sure there are at most CYL__STEPS) */
+                    if (x->sg) {
+                        t = CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg);
+                    } else {
+                        const CYL__L cb[8] = {r * na * (1 + 4 * u), ms, es, ma, mw, md, eA,
+                                              r / md};
+                        int rs = ce && x->resid;
+                        if (!rs ||
+                            !CYL__P(frefr)(ray, cyl, a, d, s, r, lf, A, x->t, sel[i], cb, &t))
+                            t = CYL__P(fref)(ray, cyl, a, d, s, r, lf, A, sq, x->t, sel[i],
+                                             rs ? CYL__P(fsteps)(x->et, CYL__P(labs)(x->t), sq,
+                                                                 esq, md, r, CYL__STEPS)
+                                                : x->steps);
+                    }
+                    tdev = CYL__P(fclamp)(ray, tsc, &t, &tu);
+                }
+#endif
                 tr = (CYL__R)tu;
                 o->t = tr;
                 o->part = x->sg ? (x->sg > 0 ? CYL_CAP_HIGH : CYL_CAP_LOW) : CYL_SIDE;
