@@ -480,6 +480,38 @@ static void test_double_parallel_far_cap_outside_disk(void)
   expect_double_miss(&ray, &cyl, opts, sizeof opts / sizeof opts[0]);
 }
 
+/* Finding 35 (fixed by the commit that added it; grid corpus:
+ * fuzz/corpus_grid/finding-double-precise-entry-points-disagree; found by scripts/ci-fuzz.sh in
+ * a fresh clone, session 7). CYL_PRECISE, double: the first root certified its one-step
+ * correction with √ from its own residual (frefr) while the second could be corrected neither
+ * so nor by six plain steps. intersect, which corrects only the first, answered on the fast
+ * path; intersect_all handed over to the solver; the two first hits differed by 3 ulps of a
+ * t near 0 (both within their bounds). A root that no plain steps would correct is now
+ * corrected, or handed over, in the certification, for every entry point alike. Exact answer
+ * (ref/): two wall crossings, the first at t = -0x1.6bf8394d46cecp-53. */
+static void test_double_precise_entry_points_disagree(void)
+{
+  cyld_ray ray = {{0x1.e8p+27, 0x1.e8p-49, -0x1p-1}, {0x1p-1, 0x1.1p+51, -0x1.ecp+44},
+                  -0x1.dp-34, 0x1.38p+6};
+  cyld_cylinder cyl = {{0, 0, 0}, {0x1p+0, 0x1.e8p+27, 0x1.e8p+6}, 0x1.e8p+27, 0x1.e8p+27};
+  const unsigned opts[] = {CYL_PRECISE, CYL_PRECISE | CYL_CAPS,
+                           CYL_PRECISE | CYL_TRUSTED | CYL_OUTWARD | CYL_NO_NORMAL};
+  size_t i;
+  for (i = 0; i < sizeof opts / sizeof opts[0]; i++) {
+    cyld_hit h1, h2[2];
+    memset(&h1, 0, sizeof h1);
+    memset(h2, 0, sizeof h2);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(CYL_HIT, cyld_intersect(&ray, &cyl, opts[i], &h1), "intersect");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(2, cyld_intersect_all(&ray, &cyl, opts[i], h2), "intersect_all");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(1, cyld_occluded(&ray, &cyl, opts[i]), "occluded");
+    /* the same crossing, bit for bit: exactness is the point */
+    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&h1.t, &h2[0].t, sizeof h1.t, "first hits' t differ");
+    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&h1.t_err, &h2[0].t_err, sizeof h1.t_err, "t_err differ");
+    TEST_ASSERT_EQUAL_INT(h1.part, h2[0].part);
+    TEST_ASSERT_EQUAL_UINT(h1.flags, h2[0].flags);
+  }
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -521,5 +553,6 @@ int main(void)
   RUN_TEST(test_float_precise_flat_disk_solver_spurious_hit);
   RUN_TEST(test_double_contracted_two_sum_t_err);
   RUN_TEST(test_double_parallel_far_cap_outside_disk);
+  RUN_TEST(test_double_precise_entry_points_disagree);
   return UNITY_END();
 }
