@@ -1568,9 +1568,9 @@ CYL__INL void CYL__P(fwexact)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
    quotient loses several ulps where H|a| and a·w nearly cancel. */
 CYL__INL CYL__R CYL__P(fcapt)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                              const CYL__R a[3], const CYL__R d[3], CYL__R H, const CYL__R lf[2],
-                             int sg)
+                             int sg, CYL__R tp)
 {
-    CYL__R wh[3], wl[3], aa, aal, na, nal, ad, adl, sH = (CYL__R)sg * H;
+    CYL__R wh[3], wl[3], aa, aal, na, nal, ad, adl, sH = (CYL__R)sg * H, t;
     CYL__P(acc) sw, num;
     CYL__P(fwexact)(ray, cyl, lf, wh, wl);
     CYL__P(acc_split)(CYL__P(dot_acc)(a, a), &aa, &aal);
@@ -1582,7 +1582,12 @@ CYL__INL CYL__R CYL__P(fcapt)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
     num = CYL__P(acc_first)(sH, na);
     num.lo += sH * nal - sw.lo;
     CYL__P(acc_add)(&num, -sw.hi);
-    return CYL__P(div_dw)(num.hi, num.lo, ad, adl);
+    t = CYL__P(div_dw)(num.hi, num.lo, ad, adl);
+    /* a·d far below its plain rounding (a ray parallel to the cap planes within 2^-p of |a||d|)
+       can come out 0 here and leave no quotient: keep the plain crossing tp then, which the
+       caller decided with, and whose bound (cbound) says how little is known of it (fuzz
+       finding 36) */
+    return CYL__P(abs)(t) <= CYL__MAXR ? t : tp;
 }
 
 /* r²|a|² as a double word R2 + R2l (a exact). */
@@ -2243,7 +2248,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                                    numerator and a·d carry u² of their terms, its quotient
                                    rounds twice), decided against tmin = 0 without the solver */
                                 CYL__L at;
-                                c[k].t = CYL__P(fcapt)(ray, cyl, a, d, H, lf, c[k].sg);
+                                c[k].t = CYL__P(fcapt)(ray, cyl, a, d, H, lf, c[k].sg, c[k].t);
                                 c[k].steps = 0;
                                 at = CYL__P(labs)(c[k].t);
                                 c[k].et = (2 * u * at + 16 * u * u *
@@ -2314,7 +2319,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                        step does not certify itself takes the plain steps fsteps counts (the
                        certification made sure there are at most CYL__STEPS) */
                     if (x->sg) {
-                        t = CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg);
+                        t = CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg, t);
                     } else {
                         const CYL__L cb[8] = {r * na * (1 + 4 * u), ms, es, ma, mw, md, eA,
                                               r / md};
@@ -2512,7 +2517,7 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
 #if !CYL__WIDE
         /* the plane crossing to about an ulp from double words (the plain quotient loses
            several where H|a| and a·w nearly cancel), kept in [tmin, tmax] */
-        t = CYL__P(fcapt)(ray, cyl, f->a, f->d, f->H, f->lf, sg);
+        t = CYL__P(fcapt)(ray, cyl, f->a, f->d, f->H, f->lf, sg, t);
         tdev = CYL__P(fclamp)(ray, f->tsc, &t, &tu);
 #endif
         o->part = sg > 0 ? CYL_CAP_HIGH : CYL_CAP_LOW;
