@@ -512,6 +512,43 @@ static void test_double_precise_entry_points_disagree(void)
   }
 }
 
+/* Finding 36 (fixed by the commit that added it; raw corpus:
+ * fuzz/corpus/finding-double-cap-plane-parallel-nan; make fuzz, session 7, present since the
+ * lean path's cap correction). Double from_segment, default tier, capped, FMA build: the ray is
+ * parallel to the cap planes within 2^-784 of |a||d| and its origin lies on the high cap's
+ * plane within the roundings. The plain a·d (2^-52 of its terms, all rounding) put a cap
+ * crossing in [tmin, tmax]; the double-word a·d of its correction (fcapt) came out exactly 0,
+ * and 0/0 gave a hit with t = NaN. The correction now keeps the plain crossing where its own
+ * quotient is not finite (t_err then +inf). Either answer is right this close to the cap's
+ * plane, but never a NaN. */
+static void test_double_cap_plane_parallel_nan(void)
+{
+  const double p0[3] = {0x0.00000427f8p-1022, -0x1.f5f5f5f5f5f5fp-282, 0x1.f5f5f5f5f5f5fp+502};
+  const double p1[3] = {0x1.f5f5f5f5f5f5fp+502, 0x1.05f5f5f575f5fp-975, 0x1p-703};
+  cyld_ray ray = {{0x1.f5f5f5f5f5f5fp+502, 0x1.f5f5f5f5f5f5fp+502, -0x1.f5f5f5f5f5f5fp-4},
+                  {-0x1.fbfbfbfbfbfbfp-4, -0x1.fbfbfbfbfbfbfp-4, -0x1.fbfbfbfbfbfbfp-4},
+                  -0x1.fbfbfbfbfbfbfp-4, 0x0.05fbfbfbfbfbfp-1022};
+  cyld_cylinder cyl = cyld_from_segment(p0, p1, 0x1.64000000000cp+512);
+  const unsigned opts[] = {0u, CYL_CAPS, CYL_CAPS | CYL_PRECISE,
+                           CYL_CAPS | CYL_OUTWARD | CYL_NO_TANGENT | CYL_NO_NORMAL | CYL_TRUSTED};
+  size_t i;
+  for (i = 0; i < sizeof opts / sizeof opts[0]; i++) {
+    cyld_hit h[2], h1;
+    int n, j, one;
+    memset(h, 0, sizeof h);
+    memset(&h1, 0, sizeof h1);
+    n = cyld_intersect_all(&ray, &cyl, opts[i], h);
+    one = cyld_intersect(&ray, &cyl, opts[i], &h1);
+    TEST_ASSERT_TRUE_MESSAGE(n >= 0 && n <= 2, "intersect_all");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(n > 0 ? CYL_HIT : CYL_MISS, one, "intersect and intersect_all");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(n > 0, cyld_occluded(&ray, &cyl, opts[i]), "occluded");
+    for (j = 0; j < n; j++) {
+      TEST_ASSERT_TRUE_MESSAGE(h[j].t >= ray.tmin && h[j].t <= ray.tmax, "t NaN or out of range");
+      TEST_ASSERT_TRUE_MESSAGE(h[j].t_err >= 0, "t_err NaN or negative");
+    }
+  }
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -554,5 +591,6 @@ int main(void)
   RUN_TEST(test_double_contracted_two_sum_t_err);
   RUN_TEST(test_double_parallel_far_cap_outside_disk);
   RUN_TEST(test_double_precise_entry_points_disagree);
+  RUN_TEST(test_double_cap_plane_parallel_nan);
   return UNITY_END();
 }
