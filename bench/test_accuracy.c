@@ -329,7 +329,8 @@ static void test_precise_trange_grazing_double(void) { check_precise_trange_graz
  * exact reference: the same count, parts and crossings wherever the margin exceeds the band;
  * t_err contains the exact t; and t within INBAND_ULPS_MAX ulps of it on every hit, contacts
  * inside the band included (the plain D, which errs by about the band's width, leaves those
- * about 10^8 ulps off in double and 10^3 in float). */
+ * off by orders of magnitude more: with the double-word path short-circuited, this test fails
+ * in double). */
 #define INBAND_ULPS_MAX 4.0  /* a root or −B/A from coefficients good to about 2u, rounded */
 
 /* x rounded to float, through memory: gcc 12.2 -O2 dropped the conversions of the plain
