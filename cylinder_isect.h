@@ -2358,6 +2358,12 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                             nl[1 - k] = a[2];
                             nl[2] = -a[1 - k];
                             len2 = CYL__P(ldot)(nl, nl);
+                        } else if (!(len2 <= CYL__LMAX)) {
+                            /* a crossing so far out that |y × a|² overflows (fuzz finding 37):
+                               scaled by its largest component */
+                            CYL__L sk = 1 / CYL__P(lmax3)(nl);
+                            for (k = 0; k < 3; k++) nl[k] *= sk;
+                            len2 = CYL__P(ldot)(nl, nl);
                         }
                         len2 = 1 / CYL__LSQRT(len2);
                         for (k = 0; k < 3; k++) nl[k] *= len2;
@@ -2499,10 +2505,23 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         if (!(opts & CYL_NO_NORMAL)) {
             /* the outward normal y × a, |y × a| = |y||a| (y ⊥ a); it faces the ray where
                (y × a)·d = y·s = G < 0 */
-            CYL__L sc = 1 / CYL__LSQRT(Y * f->aa);
-            nl[0] = CYL__LMADD(y[1], f->a[2], -(y[2] * f->a[1])) * sc;
-            nl[1] = CYL__LMADD(y[2], f->a[0], -(y[0] * f->a[2])) * sc;
-            nl[2] = CYL__LMADD(y[0], f->a[1], -(y[1] * f->a[0])) * sc;
+            CYL__L Ya = Y * f->aa, sc, yn[3];
+            yn[0] = y[0];
+            yn[1] = y[1];
+            yn[2] = y[2];
+            if (!(Ya <= CYL__LMAX)) {
+                /* a crossing so far out that |y|²|a|² overflows (the far root of a contact in
+                   the tangent band, fuzz finding 37): y scaled by its largest component */
+                CYL__L k = 1 / CYL__P(lmax3)(y);
+                yn[0] = y[0] * k;
+                yn[1] = y[1] * k;
+                yn[2] = y[2] * k;
+                Ya = CYL__P(ldot)(yn, yn) * f->aa;
+            }
+            sc = 1 / CYL__LSQRT(Ya);
+            nl[0] = CYL__LMADD(yn[1], f->a[2], -(yn[2] * f->a[1])) * sc;
+            nl[1] = CYL__LMADD(yn[2], f->a[0], -(yn[0] * f->a[2])) * sc;
+            nl[2] = CYL__LMADD(yn[0], f->a[1], -(yn[1] * f->a[0])) * sc;
             face = G > 0 ? -1 : 1;
         }
         /* v within ±h/2 up to rounding: reported within; an infinite tube's saturates */
