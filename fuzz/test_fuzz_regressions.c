@@ -550,6 +550,36 @@ static void test_double_cap_plane_parallel_nan(void)
   }
 }
 
+/* Finding 37 (fixed by the commit that added it; raw corpus:
+ * fuzz/corpus/finding-double-tangent-far-root-zero-normal; scripts/ci-fuzz.sh in a fresh clone,
+ * session 7, present since the lean path: 246e0ce fails too). Double from_segment with
+ * coordinates near 2^695, default tier: a contact inside the tangent band whose second root
+ * lies at t = 2^640, so far out that |y|²|a|² overflowed in the normal's scale and the hit
+ * came back with n = 0. The normal now scales y (in the fast path y × a) by its largest
+ * component first where the square overflows. */
+static void test_double_tangent_far_root_zero_normal(void)
+{
+  const double p0[3] = {0x0.000000000006bp-1022, 0, 0x1.b6b6b6b6b6b6bp+695};
+  const double p1[3] = {0x1.b6b6b6b6b6b6bp+695, -0x1.16b6b6b6b6b6bp-1017, 0x1.b6b6b6b6b6bp+695};
+  cyld_ray ray = {{0x0.00000000c0008p-1022, 0x0.0000000003f8p-1022, 0x1.f000000fp-1012},
+                  {0x1.1003ff008p-1014, 0x1.0000000003bp+977, 0x1.4f9p+2}, 0, 0x1.b6b6b6b6b6bp+695};
+  cyld_cylinder cyl = cyld_from_segment(p0, p1, 0x1.b6b6b6b6b6b6bp+695);
+  const unsigned opts[] = {0u, CYL_CAPS, CYL_CAPS | CYL_PRECISE, CYL_OUTWARD};
+  size_t i;
+  for (i = 0; i < sizeof opts / sizeof opts[0]; i++) {
+    cyld_hit h[2];
+    int n, j;
+    memset(h, 0, sizeof h);
+    n = cyld_intersect_all(&ray, &cyl, opts[i], h);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(2, n, "intersect_all");
+    for (j = 0; j < n; j++) {
+      double l = sqrt(h[j].n[0] * h[j].n[0] + h[j].n[1] * h[j].n[1] + h[j].n[2] * h[j].n[2]);
+      /* a unit normal to about an ulp per component and rounding */
+      TEST_ASSERT_TRUE_MESSAGE(fabs(l - 1) <= 1e-14, "normal not of unit length");
+    }
+  }
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -593,5 +623,6 @@ int main(void)
   RUN_TEST(test_double_parallel_far_cap_outside_disk);
   RUN_TEST(test_double_precise_entry_points_disagree);
   RUN_TEST(test_double_cap_plane_parallel_nan);
+  RUN_TEST(test_double_tangent_far_root_zero_normal);
   return UNITY_END();
 }
