@@ -1542,9 +1542,12 @@ CYL__INL CYL__L CYL__P(ldop)(CYL__L p, CYL__L q, CYL__L r, CYL__L s)
 /* Is the ray point at t on the disk |a × x| <= r|a|? y = m + t·s = a × x(t). */
 CYL__INL int CYL__P(fdisk)(const CYL__L m[3], const CYL__L s[3], CYL__L R2, CYL__L t)
 {
+    /* component by component: a loop here keeps the caller's frame in memory (gcc's scalar
+       replacement runs before loops are unrolled) */
     CYL__L y[3];
-    int i;
-    for (i = 0; i < 3; i++) y[i] = CYL__LMADD(t, s[i], m[i]);
+    y[0] = CYL__LMADD(t, s[0], m[0]);
+    y[1] = CYL__LMADD(t, s[1], m[1]);
+    y[2] = CYL__LMADD(t, s[2], m[2]);
     return CYL__P(ldot)(y, y) <= R2;
 }
 
@@ -1608,24 +1611,28 @@ CYL__INL CYL__R CYL__P(fres)(const CYL__R a[3], const CYL__R d[3], const CYL__R 
                             const CYL__R wh[3], const CYL__R wl[3], CYL__R R2, CYL__R R2l,
                             CYL__R t, CYL__R *G)
 {
-    CYL__R xh[3], xl[3], yh[3], yl[3];
+    /* component by component (see fdisk) */
+    CYL__R xh[3], xl[3], yh[3], yl[3], p0 = t * d[0], p1 = t * d[1], p2 = t * d[2], h0, h1, h2,
+                                       e0, e1, e2;
     CYL__P(acc) sf;
-    int i;
-    for (i = 0; i < 3; i++) {
-        CYL__R p = t * d[i], pe = CYL__FMAR(t, d[i], -p), xe;
-        CYL__P(two_sum)(wh[i], p, &xh[i], &xe);
-        xl[i] = xe + (wl[i] + pe);
-    }
+    CYL__P(two_sum)(wh[0], p0, &h0, &e0);
+    CYL__P(two_sum)(wh[1], p1, &h1, &e1);
+    CYL__P(two_sum)(wh[2], p2, &h2, &e2);
+    xh[0] = h0;
+    xh[1] = h1;
+    xh[2] = h2;
+    xl[0] = e0 + (wl[0] + CYL__FMAR(t, d[0], -p0));
+    xl[1] = e1 + (wl[1] + CYL__FMAR(t, d[1], -p1));
+    xl[2] = e2 + (wl[2] + CYL__FMAR(t, d[2], -p2));
     CYL__P(cross_dw)(a, xh, xl, yh, yl);
     sf = CYL__P(acc_first)(yh[0], yh[0]);
     CYL__P(acc_prod)(&sf, yh[1], yh[1]);
     CYL__P(acc_prod)(&sf, yh[2], yh[2]);
     CYL__P(acc_add)(&sf, -R2);
-    *G = 0;
-    for (i = 0; i < 3; i++) {
-        sf.lo += 2 * yh[i] * yl[i];
-        *G += yh[i] * s[i];
-    }
+    sf.lo += 2 * yh[0] * yl[0];
+    sf.lo += 2 * yh[1] * yl[1];
+    sf.lo += 2 * yh[2] * yl[2];
+    *G = yh[0] * s[0] + yh[1] * s[1] + yh[2] * s[2];
     return sf.hi + (sf.lo - R2l);
 }
 
@@ -1952,6 +1959,54 @@ CYL__INL int CYL__P(fscale)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     return 0;
 }
 
+/* The rare scaling step, out of line: were the frame's a, d, w, r and h passed by address
+   from the hot path, gcc would keep them in memory there for the whole call (make insn: about
+   30 instructions per call of the float API's lean path). It starts again from the caller's
+   data (the frame holds nothing else before it scales), validates, and hands the scaled
+   frame back through x. Returns -1 where the solver must answer. */
+typedef struct CYL__P(sc) {
+    CYL__L a[3], d[3], w[3], r, h, tsc, vsc;
+    CYL__R lf[2];
+} CYL__P(sc);
+CYL__SLOW int CYL__P(scale_out)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                                CYL__P(sc) *x)
+{
+    int i;
+    if (CYL__P(validate)(ray, cyl)) return -1;
+    for (i = 0; i < 3; i++) {
+        x->a[i] = (CYL__L)cyl->a[i];
+        x->d[i] = (CYL__L)ray->d[i];
+        x->w[i] = (CYL__L)ray->o[i] - (CYL__L)cyl->c[i];
+    }
+    x->r = (CYL__L)cyl->r;
+    x->h = (CYL__L)cyl->h;
+    x->lf[0] = x->lf[1] = 1;
+    return CYL__P(fscale)(ray, cyl, x->a, x->d, x->w, &x->r, &x->h, x->lf, &x->tsc, &x->vsc);
+}
+CYL__INL int CYL__P(rescale)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, CYL__L a[3],
+                            CYL__L d[3], CYL__L w[3], CYL__L *r, CYL__L *h, CYL__R lf[2],
+                            CYL__L *tsc, CYL__L *vsc)
+{
+    CYL__P(sc) x;
+    if (CYL__P(scale_out)(ray, cyl, &x)) return -1;
+    a[0] = x.a[0];
+    a[1] = x.a[1];
+    a[2] = x.a[2];
+    d[0] = x.d[0];
+    d[1] = x.d[1];
+    d[2] = x.d[2];
+    w[0] = x.w[0];
+    w[1] = x.w[1];
+    w[2] = x.w[2];
+    *r = x.r;
+    *h = x.h;
+    *tsc = x.tsc;
+    *vsc = x.vsc;
+    lf[0] = x.lf[0];
+    lf[1] = x.lf[1];
+    return 0;
+}
+
 /* CYL_PRECISE: how many exact-quadratic steps with sq = √(|a|²D) (within esq of exact) take
    a start within e of a wall root (at = |start|) to within 0.25u·(at + r/md) of it, or
    most + 1 where more than most would be needed. The correction solves the exact quadratic
@@ -1995,11 +2050,17 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     int comp = 0;    /* CYL_PRECISE near the tangent band: A, B, C, D from double words */
     int noroots = 0; /* ... and a contact without roots there (D < 0): both ends at −B/A */
 
-    for (i = 0; i < 3; i++) {
-        a[i] = (CYL__L)cyl->a[i];
-        d[i] = (CYL__L)ray->d[i];
-        w[i] = (CYL__L)ray->o[i] - (CYL__L)cyl->c[i];
-    }
+    /* component by component, and the scaling on a copy (rescale): a loop or an address
+       here keeps a, d and w in memory on the whole path */
+    a[0] = (CYL__L)cyl->a[0];
+    a[1] = (CYL__L)cyl->a[1];
+    a[2] = (CYL__L)cyl->a[2];
+    d[0] = (CYL__L)ray->d[0];
+    d[1] = (CYL__L)ray->d[1];
+    d[2] = (CYL__L)ray->d[2];
+    w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0];
+    w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1];
+    w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2];
     r = (CYL__L)cyl->r;
     H = (CYL__L)cyl->h; /* h until the frame is set, then h/2 */
     for (;;) {
@@ -2024,9 +2085,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         if (aa >= 1 / CYL__LDIR && aa <= CYL__LDIR && dd >= 1 / CYL__LDIR && dd <= CYL__LDIR &&
             MM + R2 <= hi && R2 >= lo && r > 0 && cyl->h > 0 && ray->tmin <= ray->tmax)
             break;
-        if (scaled++ || CYL__P(validate)(ray, cyl) ||
-            CYL__P(fscale)(ray, cyl, a, d, w, &r, &H, lf, &tsc, &vsc))
-            return -1;
+        if (scaled++ || CYL__P(rescale)(ray, cyl, a, d, w, &r, &H, lf, &tsc, &vsc)) return -1;
     }
     {
         /* Hand over what the plain roundings cannot resolve: o − c beyond 2^30 (double) or
@@ -2102,8 +2161,20 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                decide goes to the solver. */
             if (!(D > band + eD)) {
 #if !CYL__WIDE
-                CYL__L cv[3], cerr[3];
-                if (!CYL__P(fcomp)(ray, cyl, a, d, r, lf, mw, ma, md, band, cv, cerr)) return -1;
+                /* fcomp is out of line: its inputs as copies, so that a and d themselves need
+                   no address (see rescale) */
+                CYL__L cv[3], cerr[3], ac[3], dc[3];
+                CYL__R lc[2];
+                ac[0] = a[0];
+                ac[1] = a[1];
+                ac[2] = a[2];
+                dc[0] = d[0];
+                dc[1] = d[1];
+                dc[2] = d[2];
+                lc[0] = lf[0];
+                lc[1] = lf[1];
+                if (!CYL__P(fcomp)(ray, cyl, ac, dc, r, lc, mw, ma, md, band, cv, cerr))
+                    return -1;
                 A = cv[0];
                 eA = cerr[0];
                 Bc = cv[1];
@@ -2623,8 +2694,7 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
             dd <= CYL__LDIR && MM + f.R2 <= hi && f.R2 >= 1 / hi && r > 0 && h > 0 &&
             tmin <= tmax)
             break;
-        if (scaled++ || CYL__P(validate)(ray, cyl) ||
-            CYL__P(fscale)(ray, cyl, f.a, f.d, f.w, &r, &h, f.lf, &f.tsc, &f.vsc))
+        if (scaled++ || CYL__P(rescale)(ray, cyl, f.a, f.d, f.w, &r, &h, f.lf, &f.tsc, &f.vsc))
             return -1;
     }
     /* the fast path's hand-over of far origins and of an h/2 that rounds; cap planes within
