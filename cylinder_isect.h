@@ -2528,6 +2528,7 @@ CYL__INL CYL__L CYL__P(qbound)(const CYL__L y[3], CYL__L Y, CYL__L Gs, CYL__L at
 typedef struct CYL__P(qf) {
     CYL__L a[3], d[3], w[3], s[3], m[3];
     CYL__L aa, na, A, R2, ad, aw, H, Hn, r, sq;
+    CYL__L w1, d1;   /* |w|_1 and |d|_1 for the bounds, formed early: w and d then die there */
     CYL__L tsc, vsc; /* the frame's t and lengths times these are the caller's */
     CYL__R lf[2];    /* the frame's length scale, as two factors */
 } CYL__P(qf);
@@ -2551,8 +2552,8 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
            Sd = |a|·|d|_1; |δm| <= 4u|a||w| (o − c, the products and the subtraction, with or
            without an FMA); |δs| <= u|s| for float inputs (exact products, one rounding), 2u|s|
            for Kahan's, else 3u|a||d| */
-        Sw = f->na * CYL__P(l1)(f->w);
-        Sd = f->na * CYL__P(l1)(f->d);
+        Sw = f->na * f->w1;
+        Sd = f->na * f->d1;
         s1 = CYL__P(l1)(f->s);
         em = 4 * u * Sw;
         es = CYL__WIDE ? u * s1 : (CYL__LKAHAN ? 2 * u * s1 : 3 * u * Sd);
@@ -2714,6 +2715,8 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         /* parallel (sin² = A/(|a|²|d|²) within the tolerance): the wall is never hit; a cap
            is, where the ray point lies on its disk */
         if (!caps || !(h <= (CYL__L)CYL__MAXR)) return 0;
+        f.w1 = CYL__P(l1)(f.w);
+        f.d1 = CYL__P(l1)(f.d);
         tf = CYL_F_PARALLEL;
         sg0 = f.ad > 0 ? -1 : 1;
         sg1 = -sg0;
@@ -2729,6 +2732,8 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         if (D < -band) return 0;
         tf = D <= band ? CYL_F_TANGENT : 0u;
         if (tf && (opts & CYL_NO_TANGENT)) return 0;
+        f.w1 = CYL__P(l1)(f.w);
+        f.d1 = CYL__P(l1)(f.d);
         B = CYL__P(ldot)(f.m, f.s);
         C = MM - f.R2;
         f.sq = sq = CYL__LSQRT(f.aa * (D > 0 ? D : 0));
