@@ -1987,6 +1987,12 @@ CYL__INL int CYL__P(rescale)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
                             CYL__L d[3], CYL__L w[3], CYL__L *r, CYL__L *h, CYL__R lf[2],
                             CYL__L *tsc, CYL__L *vsc)
 {
+#if defined(__OPTIMIZE_SIZE__)
+    /* -Os: in place, as the copy costs Cortex-M4F about 200 bytes of code (make sizes) */
+    return CYL__P(validate)(ray, cyl) || CYL__P(fscale)(ray, cyl, a, d, w, r, h, lf, tsc, vsc)
+               ? -1
+               : 0;
+#else
     CYL__P(sc) x;
     if (CYL__P(scale_out)(ray, cyl, &x)) return -1;
     a[0] = x.a[0];
@@ -2005,6 +2011,7 @@ CYL__INL int CYL__P(rescale)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
     lf[0] = x.lf[0];
     lf[1] = x.lf[1];
     return 0;
+#endif
 }
 
 /* CYL_PRECISE: how many exact-quadratic steps with sq = √(|a|²D) (within esq of exact) take
