@@ -2232,7 +2232,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                 if (ce) {
                     /* the roots' bounds: q' = −(B + sgn(B̂)√(|a|²D)) exact, |q − q'| <= eq,
                        t = q/A or C/q (1/(x(1 − ε)) <= (1 + 2ε)/x for ε <= 1/4) */
-                    CYL__L eB, eC, aq = CYL__P(labs)(q), rq, rA = eA / A, g, e0, e1;
+                    CYL__L eB, eC, aq = CYL__P(labs)(q), rq, rA = eA / A, g, e0, e1, iq;
                     eB = comp ? eBc : 6 * ma * mw * (6 * u * ms + 2 * es) + tiny;
                     /* C from fres carries u of itself and u² of |m|², r²|a|² and |a|²|o − c|²
                        (<= 9 ma² mw²), over-covered here */
@@ -2241,11 +2241,14 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                             : 3 * u * MM + em * (12 * ma * mw + 3 * em) + 7 * u * R2 +
                                   u * CYL__P(labs)(C) + tiny;
                     esq = noroots ? 0 : aa * (eD + 4 * u * Dp) / sq + u * sq;
-                    rq = (eB + esq + u * (sq + aq)) / aq;
+                    /* one reciprocal for both quotients by |q| (off a long chain of
+                       divisions), raised by 4u so that each product bounds its quotient */
+                    iq = (1 + 4 * u) / aq;
+                    rq = (eB + esq + u * (sq + aq)) * iq;
                     if (!(rq < (CYL__L)0.25)) return -1;
                     g = rq * (1 + 2 * rq) + rA * (1 + 2 * rA) + u;
                     e0 = CYL__P(labs)(ta) * g * (1 + 2 * rA) * (1 + 2 * g) * sf;
-                    e1 = ((eC / aq + CYL__P(labs)(tb) * rq) * (1 + 2 * rq) + u * CYL__P(labs)(tb)) *
+                    e1 = ((eC * iq + CYL__P(labs)(tb) * rq) * (1 + 2 * rq) + u * CYL__P(labs)(tb)) *
                          sf;
                     if (noroots) e1 = e0; /* the contact: t = q/A at both ends */
                     c[0].et = swap ? e1 : e0;
