@@ -2388,7 +2388,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
             for (i = 0; i < kept; i++) {
                 const CYL__P(fx) *x = &c[sel[i]];
                 CYL__N(hit) *o = &hits[i];
-                CYL__L t = x->t, tu, nl[3] = {0, 0, 0}, y[3], face = 1, et;
+                CYL__L t = x->t, tu, nl[3] = {0, 0, 0}, y[3] = {0, 0, 0}, face = 1, et;
                 CYL__L tdev = 0; /* |t·tsc − tu| where the frame's t is not exactly tu */
                 CYL__R tr;
                 tu = t * tsc;
@@ -2426,7 +2426,9 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                     CYL__L v = CYL__LMADD(t, ad, aw) / na * vsc;
                     if (!(opts & CYL_NO_NORMAL)) {
                         CYL__L len2;
-                        for (k = 0; k < 3; k++) y[k] = CYL__LMADD(t, s[k], m[k]);
+                        y[0] = CYL__LMADD(t, s[0], m[0]);
+                        y[1] = CYL__LMADD(t, s[1], m[1]);
+                        y[2] = CYL__LMADD(t, s[2], m[2]);
                         nl[0] = CYL__LMADD(y[1], a[2], -(y[2] * a[1]));
                         nl[1] = CYL__LMADD(y[2], a[0], -(y[0] * a[2]));
                         nl[2] = CYL__LMADD(y[0], a[1], -(y[1] * a[0]));
@@ -2434,20 +2436,24 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                         if (!(len2 >= tiny)) {
                             /* y lost to cancellation (r far below the rounding of o − c):
                                any unit vector orthogonal to the axis */
-                            k = CYL__P(labs)(a[0]) <= CYL__P(labs)(a[1]) ? 0 : 1;
-                            nl[k] = 0;
-                            nl[1 - k] = a[2];
-                            nl[2] = -a[1 - k];
+                            int z0 = CYL__P(labs)(a[0]) <= CYL__P(labs)(a[1]); /* zero nl[0] */
+                            nl[0] = z0 ? 0 : a[2];
+                            nl[1] = z0 ? a[2] : 0;
+                            nl[2] = z0 ? -a[1] : -a[0];
                             len2 = CYL__P(ldot)(nl, nl);
                         } else if (!(len2 <= CYL__LMAX)) {
                             /* a crossing so far out that |y × a|² overflows (fuzz finding 37):
                                scaled by its largest component */
                             CYL__L sk = 1 / CYL__P(lmax3)(nl);
-                            for (k = 0; k < 3; k++) nl[k] *= sk;
+                            nl[0] *= sk;
+                            nl[1] *= sk;
+                            nl[2] *= sk;
                             len2 = CYL__P(ldot)(nl, nl);
                         }
                         len2 = 1 / CYL__LSQRT(len2);
-                        for (k = 0; k < 3; k++) nl[k] *= len2;
+                        nl[0] *= len2;
+                        nl[1] *= len2;
+                        nl[2] *= len2;
                         face = CYL__P(ldot)(nl, d) > 0 ? -1 : 1;
                     }
                     /* within ±h/2 up to rounding: reported within; an infinite tube's v
@@ -2459,15 +2465,21 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                 } else {
                     if (!(opts & CYL_NO_NORMAL)) {
                         CYL__L sg = (CYL__L)x->sg / na;
-                        for (k = 0; k < 3; k++) nl[k] = sg * a[k];
+                        nl[0] = sg * a[0];
+                        nl[1] = sg * a[1];
+                        nl[2] = sg * a[2];
                         face = sg * ad > 0 ? -1 : 1;
                     }
                     o->v = x->sg > 0 ? Hu : -Hu;
                 }
                 if (opts & CYL_OUTWARD) face = 1;
-                for (k = 0; k < 3; k++) {
-                    CYL__L nk = face * nl[k];
-                    o->n[k] = (CYL__R)nk;
+                {
+                    /* named before the conversion (MISRA 10.8); component by component, so
+                       that a, s, m and the normal need no memory (see rescale) */
+                    CYL__L n0 = face * nl[0], n1 = face * nl[1], n2 = face * nl[2];
+                    o->n[0] = (CYL__R)n0;
+                    o->n[1] = (CYL__R)n1;
+                    o->n[2] = (CYL__R)n2;
                 }
                 if (opts & CYL_NO_ERRBOUND) {
                     o->t_err = CYL__MAXR * 2;
@@ -2482,8 +2494,11 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                     CYL__L at = CYL__P(labs)(t);
                     if (!ce) CYL__P(ferr)(a, d, s, mw, &ma, &md, &ms, &es, &em);
                     if (!x->sg) {
-                        if (opts & CYL_NO_NORMAL)
-                            for (k = 0; k < 3; k++) y[k] = CYL__LMADD(t, s[k], m[k]);
+                        if (opts & CYL_NO_NORMAL) {
+                            y[0] = CYL__LMADD(t, s[0], m[0]);
+                            y[1] = CYL__LMADD(t, s[1], m[1]);
+                            y[2] = CYL__LMADD(t, s[2], m[2]);
+                        }
                         et = CYL__P(wbound)(y, CYL__P(ldot)(y, y), CYL__P(ldot)(y, s), at, A, R2,
                                             ms, es, em);
                     } else {
