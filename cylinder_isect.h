@@ -2388,7 +2388,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
             for (i = 0; i < kept; i++) {
                 const CYL__P(fx) *x = &c[sel[i]];
                 CYL__N(hit) *o = &hits[i];
-                CYL__L t = x->t, tu, nl[3] = {0, 0, 0}, y[3] = {0, 0, 0}, face = 1, et;
+                CYL__L t = x->t, tu, nl[3] = {0, 0, 0}, y[3], face = 1, et;
                 CYL__L tdev = 0; /* |t·tsc − tu| where the frame's t is not exactly tu */
                 CYL__R tr;
                 tu = t * tsc;
@@ -2426,9 +2426,9 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                     CYL__L v = CYL__LMADD(t, ad, aw) / na * vsc;
                     if (!(opts & CYL_NO_NORMAL)) {
                         CYL__L len2;
-                        y[0] = CYL__LMADD(t, s[0], m[0]);
-                        y[1] = CYL__LMADD(t, s[1], m[1]);
-                        y[2] = CYL__LMADD(t, s[2], m[2]);
+                        /* y stays a loop: written out, it costs Cortex-M4F 40 bytes of stack
+                           under -Os (make sizes) */
+                        for (k = 0; k < 3; k++) y[k] = CYL__LMADD(t, s[k], m[k]);
                         nl[0] = CYL__LMADD(y[1], a[2], -(y[2] * a[1]));
                         nl[1] = CYL__LMADD(y[2], a[0], -(y[0] * a[2]));
                         nl[2] = CYL__LMADD(y[0], a[1], -(y[1] * a[0]));
@@ -2494,11 +2494,8 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                     CYL__L at = CYL__P(labs)(t);
                     if (!ce) CYL__P(ferr)(a, d, s, mw, &ma, &md, &ms, &es, &em);
                     if (!x->sg) {
-                        if (opts & CYL_NO_NORMAL) {
-                            y[0] = CYL__LMADD(t, s[0], m[0]);
-                            y[1] = CYL__LMADD(t, s[1], m[1]);
-                            y[2] = CYL__LMADD(t, s[2], m[2]);
-                        }
+                        if (opts & CYL_NO_NORMAL)
+                            for (k = 0; k < 3; k++) y[k] = CYL__LMADD(t, s[k], m[k]);
                         et = CYL__P(wbound)(y, CYL__P(ldot)(y, y), CYL__P(ldot)(y, s), at, A, R2,
                                             ms, es, em);
                     } else {
