@@ -1960,10 +1960,10 @@ CYL__INL int CYL__P(fscale)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
 }
 
 /* The rare scaling step, out of line: were the frame's a, d, w, r and h passed by address
-   from the hot path, gcc would keep them in memory there for the whole call (make insn: about
-   30 instructions per call of the float API's lean path). It starts again from the caller's
-   data (the frame holds nothing else before it scales), validates, and hands the scaled
-   frame back through x. Returns -1 where the solver must answer. */
+   from the hot path, gcc would keep them in memory there for the whole call (loads and stores
+   on every call: `make insn` counts them). It starts again from the caller's data (the frame
+   holds nothing else before it scales), validates, and hands the scaled frame back through x.
+   Returns -1 where the solver must answer. */
 typedef struct CYL__P(sc) {
     CYL__L a[3], d[3], w[3], r, h, tsc, vsc;
     CYL__R lf[2];
@@ -1988,7 +1988,7 @@ CYL__INL int CYL__P(rescale)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
                             CYL__L *tsc, CYL__L *vsc)
 {
 #if defined(__OPTIMIZE_SIZE__)
-    /* -Os: in place, as the copy costs Cortex-M4F about 200 bytes of code (make sizes) */
+    /* -Os: in place, where the copy would only add code (make sizes) */
     return CYL__P(validate)(ray, cyl) || CYL__P(fscale)(ray, cyl, a, d, w, r, h, lf, tsc, vsc)
                ? -1
                : 0;
@@ -2241,8 +2241,8 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                             : 3 * u * MM + em * (12 * ma * mw + 3 * em) + 7 * u * R2 +
                                   u * CYL__P(labs)(C) + tiny;
                     esq = noroots ? 0 : aa * (eD + 4 * u * Dp) / sq + u * sq;
-                    /* one reciprocal for both quotients by |q| (off a long chain of
-                       divisions), raised by 4u so that each product bounds its quotient */
+                    /* one reciprocal for both quotients by |q|, raised by 4u so that each
+                       product bounds its quotient */
                     iq = (1 + 4 * u) / aq;
                     rq = (eB + esq + u * (sq + aq)) * iq;
                     if (!(rq < (CYL__L)0.25)) return -1;
@@ -2426,8 +2426,8 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                     CYL__L v = CYL__LMADD(t, ad, aw) / na * vsc;
                     if (!(opts & CYL_NO_NORMAL)) {
                         CYL__L len2;
-                        /* y stays a loop: written out, it costs Cortex-M4F 40 bytes of stack
-                           under -Os (make sizes) */
+                        /* y stays a loop: written out, gcc -Os spills more of fast() on
+                           Cortex-M4F (its stack in make sizes) */
                         for (k = 0; k < 3; k++) y[k] = CYL__LMADD(t, s[k], m[k]);
                         nl[0] = CYL__LMADD(y[1], a[2], -(y[2] * a[1]));
                         nl[1] = CYL__LMADD(y[2], a[0], -(y[0] * a[2]));
