@@ -1612,15 +1612,11 @@ CYL__INL CYL__R CYL__P(fres)(const CYL__R a[3], const CYL__R d[3], const CYL__R 
                             CYL__R t, CYL__R *G)
 {
     /* component by component (see fdisk) */
-    CYL__R xh[3], xl[3], yh[3], yl[3], p0 = t * d[0], p1 = t * d[1], p2 = t * d[2], h0, h1, h2,
-                                       e0, e1, e2;
+    CYL__R xh[3], xl[3], yh[3], yl[3], p0 = t * d[0], p1 = t * d[1], p2 = t * d[2], e0, e1, e2;
     CYL__P(acc) sf;
-    CYL__P(two_sum)(wh[0], p0, &h0, &e0);
-    CYL__P(two_sum)(wh[1], p1, &h1, &e1);
-    CYL__P(two_sum)(wh[2], p2, &h2, &e2);
-    xh[0] = h0;
-    xh[1] = h1;
-    xh[2] = h2;
+    CYL__P(two_sum)(wh[0], p0, &xh[0], &e0);
+    CYL__P(two_sum)(wh[1], p1, &xh[1], &e1);
+    CYL__P(two_sum)(wh[2], p2, &xh[2], &e2);
     xl[0] = e0 + (wl[0] + CYL__FMAR(t, d[0], -p0));
     xl[1] = e1 + (wl[1] + CYL__FMAR(t, d[1], -p1));
     xl[2] = e2 + (wl[2] + CYL__FMAR(t, d[2], -p2));
@@ -1959,6 +1955,22 @@ CYL__INL int CYL__P(fscale)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     return 0;
 }
 
+/* The frame's a, d and w = o − c from the caller's data, component by component (a loop
+   would keep them in memory: see fdisk). */
+CYL__INL void CYL__P(frame_in)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                              CYL__L a[3], CYL__L d[3], CYL__L w[3])
+{
+    a[0] = (CYL__L)cyl->a[0];
+    a[1] = (CYL__L)cyl->a[1];
+    a[2] = (CYL__L)cyl->a[2];
+    d[0] = (CYL__L)ray->d[0];
+    d[1] = (CYL__L)ray->d[1];
+    d[2] = (CYL__L)ray->d[2];
+    w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0];
+    w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1];
+    w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2];
+}
+
 /* The rare scaling step, out of line: were the frame's a, d, w, r and h passed by address
    from the hot path, gcc would keep them in memory there for the whole call (loads and stores
    on every call: `make insn` counts them). It starts again from the caller's data (the frame
@@ -1973,6 +1985,8 @@ CYL__SLOW int CYL__P(scale_out)(const CYL__N(ray) *ray, const CYL__N(cylinder) *
 {
     int i;
     if (CYL__P(validate)(ray, cyl)) return -1;
+    /* frame_in's loads as a loop: x is in memory anyway, and frame_in here changed gcc's code
+       for the hot path around the call (make insn) */
     for (i = 0; i < 3; i++) {
         x->a[i] = (CYL__L)cyl->a[i];
         x->d[i] = (CYL__L)ray->d[i];
@@ -2057,17 +2071,9 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     int comp = 0;    /* CYL_PRECISE near the tangent band: A, B, C, D from double words */
     int noroots = 0; /* ... and a contact without roots there (D < 0): both ends at −B/A */
 
-    /* component by component, and the scaling on a copy (rescale): a loop or an address
-       here keeps a, d and w in memory on the whole path */
-    a[0] = (CYL__L)cyl->a[0];
-    a[1] = (CYL__L)cyl->a[1];
-    a[2] = (CYL__L)cyl->a[2];
-    d[0] = (CYL__L)ray->d[0];
-    d[1] = (CYL__L)ray->d[1];
-    d[2] = (CYL__L)ray->d[2];
-    w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0];
-    w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1];
-    w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2];
+    /* the scaling on a copy (rescale): an address here keeps a, d and w in memory on the
+       whole path */
+    CYL__P(frame_in)(ray, cyl, a, d, w);
     r = (CYL__L)cyl->r;
     H = (CYL__L)cyl->h; /* h until the frame is set, then h/2 */
     for (;;) {
@@ -2684,15 +2690,7 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     int caps = (opts & CYL_CAPS) != 0, sg0, sg1, in0, in1, scaled = 0;
     unsigned tf;
 
-    f.a[0] = (CYL__L)cyl->a[0];
-    f.a[1] = (CYL__L)cyl->a[1];
-    f.a[2] = (CYL__L)cyl->a[2];
-    f.d[0] = (CYL__L)ray->d[0];
-    f.d[1] = (CYL__L)ray->d[1];
-    f.d[2] = (CYL__L)ray->d[2];
-    f.w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0];
-    f.w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1];
-    f.w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2];
+    CYL__P(frame_in)(ray, cyl, f.a, f.d, f.w);
     r = (CYL__L)cyl->r;
     h = (CYL__L)cyl->h;
     tmin = (CYL__L)ray->tmin;
