@@ -3,6 +3,7 @@
 #   make report   full benchmark: bench/REPORT.md and bench/error_vs_time.png
 #                 (BENCH_SEED, BENCH_N change the seed and the cases per family)
 #   make insn     instructions per call of each variant under callgrind (INSN_FAMILIES)
+#   make ablation the double API with and without its double-word correction (target 2 vs 4)
 BENCH_BUILD  := $(BUILD)/bench
 BENCH_SRCS   := bench/eval.c bench/cases.c ref/cyl_ref.c
 BENCH_HDRS   := cylinder_isect.h bench/eval.h bench/cases.h bench/alt_formulations.h ref/cyl_ref.h
@@ -87,3 +88,19 @@ $(BENCH_BUILD)/probe: bench/probe.c $(BENCH_SRCS) $(BENCH_HDRS)
 	@mkdir -p $(@D)
 	$(GCC) $(BENCH_WARN) -O2 $(BENCH_INC) $< $(BENCH_SRCS) $(BENCH_LIBS) -o $@
 TEST_PREREQS += $(BENCH_BUILD)/probe
+
+# What the double API's double-word correction costs and buys: the benchmark built a second
+# time from a copy of the header without the two correction calls (scripts/ablate-correction.py
+# says which), both builds run on the same cases, and their target-2 accuracy and target-4
+# time ratios side by side. Minutes, not part of `make test`.
+ABL_BUILD    := $(BENCH_BUILD)/ablation
+ABL_N        ?= 3000
+.PHONY: ablation
+ablation: deps $(BENCH_BUILD)/bench
+	@mkdir -p $(ABL_BUILD)
+	$(PYTHON) scripts/ablate-correction.py patch cylinder_isect.h $(ABL_BUILD)/cylinder_isect.h
+	$(GCC) $(BENCH_WARN) $(BENCH_OPT) -DEV_TIMING -DBENCH_CFLAGS='"$(BENCH_OPT)"' -I$(ABL_BUILD) \
+	  $(BENCH_INC) bench/bench.c $(BENCH_SRCS) $(BENCH_LIBS) -o $(ABL_BUILD)/bench
+	$(BENCH_BUILD)/bench --seed $(BENCH_SEED) --n $(ABL_N) --json $(ABL_BUILD)/with.json > /dev/null
+	$(ABL_BUILD)/bench --seed $(BENCH_SEED) --n $(ABL_N) --json $(ABL_BUILD)/without.json > /dev/null
+	@$(PYTHON) scripts/ablate-correction.py compare $(ABL_BUILD)/with.json $(ABL_BUILD)/without.json
