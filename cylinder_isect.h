@@ -224,13 +224,14 @@
    misclassification beyond the band in any family in either API (the target is the benign
    ones), t within 0.5 ulps on the well-conditioned hits of the benign families in both;
    CYL_PRECISE: none beyond the band in any family, 0.5 ulps. Time per call there (each
-   variant inlined with its options folded): float 55 ns (precise 56), double 95 ns (precise
-   138; at most 1.88x the default path in every family and caps setting, 1.48x on average),
-   against 46 / 38 ns for the end-point formulation and 53 / 62 ns for the literal one (a
+   variant inlined with its options folded): float 63 ns (precise 63), double 89 ns (precise
+   126; at most 1.88x the default path in every family and caps setting, 1.44x on average),
+   against 51 / 36 ns for the end-point formulation and 60 / 60 ns for the literal one (a
    shared machine: compare within one run, and expect the ratios to move between runs); those
    two misclassify 18,787 / 14,644 and 19,839 / 10,278 cases beyond the band. Without t_err
-   and the normal the float path takes 38 ns, the double one 78 ns; `make insn` counts the
-   instructions per call.
+   and the normal the float path takes 44 ns, the double one 73 ns; `make insn` counts the
+   instructions per call, and `make ablation` shows what the double API's double-word
+   correction costs and buys.
    Extreme ratios: when r is below 2^-31 (float computed in float) or 2^-435 (double, and so
    out of reach of float inputs computed in double) of |o − c|, r² underflows in the frame:
    the wall test then compares distances linearly, may misjudge rays within the rounding of
