@@ -78,6 +78,23 @@ def agg(rows):
     return out
 
 
+TARGET2_FAMILIES = ["well", "huge", "tiny", "axis"]  # target 2's benign families
+
+
+def time_ratios(R, prec, lib, alt):
+    """lib/alt time per family x caps set where both ran, and over all those sets (summed
+    ns: every set has the same number of cases). R: the benchmark's JSON."""
+    ns = {(r["family"], r["caps"], r["variant"]): r["ns"] for r in R["rows"] if r["prec"] == prec}
+    rs, ta, tb = [], 0.0, 0.0
+    for fam in R["families"]:
+        for caps in (0, 1):
+            if (fam, caps, lib) in ns and (fam, caps, alt) in ns:
+                rs.append(ns[(fam, caps, lib)] / ns[(fam, caps, alt)])
+                ta += ns[(fam, caps, lib)]
+                tb += ns[(fam, caps, alt)]
+    return rs, (ta / tb if tb else float("nan"))
+
+
 def main():
     res_path, md_path, png_path = sys.argv[1:4]
     with open(res_path) as f:
@@ -156,9 +173,8 @@ def main():
         checked = sum(r["terr_checked"] for r in sel(prec) if r["variant"] in libv)
         L.append(f"| 1. t_err contains the exact t, every library variant | {PNAME[prec]} | "
                  f"{'PASS' if fails == 0 else 'FAIL'} | {fails} of {checked} hits outside |")
-    fam2 = ["well", "huge", "tiny", "axis"]
     for prec in (24, 53):
-        a = agg(sel(prec, "lib", fam2))
+        a = agg(sel(prec, "lib", TARGET2_FAMILIES))
         ok = a["miscls_out"] + a["all_out"] + a["occ_out"] == 0 and a["cond_ulp_max"] <= 4
         L.append(f"| 2. default path, well/huge/tiny/axis: no misclassification beyond "
                  f"2^-{prec - 8}, t within 4 ulps | {PNAME[prec]} | {'PASS' if ok else 'FAIL'} | "
@@ -189,20 +205,6 @@ def main():
         L.append(f"| 3. CYL_PRECISE at most 2x the default path's time | {PNAME[prec]} | "
                  f"{'PASS' if rmax <= 2 else 'FAIL'} | time ratio mean {fmt(rmean)}, worst "
                  f"{fmt(rmax)} over family x caps |")
-    def vs(prec, lib, alt):
-        """lib/alt time per family x caps set, and over all sets (summed ns: every set has
-        the same number of cases)"""
-        rs, ta, tb = [], 0.0, 0.0
-        for fam in R["families"]:
-            for caps in (0, 1):
-                d = sel(prec, lib, [fam], caps)
-                o = sel(prec, alt, [fam], caps)
-                if d and o:
-                    rs.append(d[0]["ns"] / o[0]["ns"])
-                    ta += d[0]["ns"]
-                    tb += o[0]["ns"]
-        return rs, (ta / tb if tb else float("nan"))
-
     for prec in (24, 53):
         # PASS needs every family x caps set within the target. The same outputs: neither
         # alternative computes an error bound, so lib+NO_ERRBOUND returns what they return
@@ -211,11 +213,11 @@ def main():
                                      1.3, "<="),
                                     ("literal", "faster than the literal formulation", 1.0,
                                      "<")):
-            rs, allr = vs(prec, "lib", alt)
+            rs, allr = time_ratios(R, prec, "lib", alt)
             if not rs:
                 continue
             ok = max(rs) <= lim if cmp == "<=" else max(rs) < lim
-            ne, ne_all = vs(prec, "lib+NO_ERRBOUND", alt)
+            ne, ne_all = time_ratios(R, prec, "lib+NO_ERRBOUND", alt)
             same = (f"; the same outputs (lib+NO_ERRBOUND): worst {fmt(max(ne))}, all sets "
                     f"{fmt(ne_all)}" if ne else "")
             L.append(f"| 4. default path {name} | {PNAME[prec]} | {'PASS' if ok else 'FAIL'} | "

@@ -32,9 +32,13 @@ $(BENCH_BUILD)/test_accuracy: bench/test_accuracy.c $(BENCH_SRCS) $(BENCH_HDRS) 
 # alt_check stamp above keep -Werror.
 BENCH_WARN   := $(filter-out -Werror,$(WARN_C))
 
+# The timing build; $(1): include directories searched before the project's (make ablation's
+# copy of the header).
+BENCH_CC      = $(GCC) $(BENCH_WARN) $(BENCH_OPT) -DEV_TIMING -DBENCH_CFLAGS='"$(BENCH_OPT)"' $(1) \
+                $(BENCH_INC) bench/bench.c $(BENCH_SRCS) $(BENCH_LIBS)
 $(BENCH_BUILD)/bench: bench/bench.c $(BENCH_SRCS) $(BENCH_HDRS)
 	@mkdir -p $(@D)
-	$(GCC) $(BENCH_WARN) $(BENCH_OPT) -DEV_TIMING -DBENCH_CFLAGS='"$(BENCH_OPT)"' $(BENCH_INC) $< $(BENCH_SRCS) $(BENCH_LIBS) -o $@
+	$(call BENCH_CC,) -o $@
 
 # alt_formulations.h is used by other code (the viewer): strict C with clang and strict C++.
 $(BENCH_BUILD)/alt_check.stamp: bench/alt_formulations.h cylinder_isect.h bench/insn.c
@@ -99,8 +103,7 @@ ABL_N        ?= 3000
 ablation: deps $(BENCH_BUILD)/bench
 	@mkdir -p $(ABL_BUILD)
 	$(PYTHON) scripts/ablate-correction.py patch cylinder_isect.h $(ABL_BUILD)/cylinder_isect.h
-	$(GCC) $(BENCH_WARN) $(BENCH_OPT) -DEV_TIMING -DBENCH_CFLAGS='"$(BENCH_OPT)"' -I$(ABL_BUILD) \
-	  $(BENCH_INC) bench/bench.c $(BENCH_SRCS) $(BENCH_LIBS) -o $(ABL_BUILD)/bench
+	$(call BENCH_CC,-I$(ABL_BUILD)) -o $(ABL_BUILD)/bench
 	$(BENCH_BUILD)/bench --seed $(BENCH_SEED) --n $(ABL_N) --json $(ABL_BUILD)/with.json > /dev/null
 	$(ABL_BUILD)/bench --seed $(BENCH_SEED) --n $(ABL_N) --json $(ABL_BUILD)/without.json > /dev/null
 	@$(PYTHON) scripts/ablate-correction.py compare $(ABL_BUILD)/with.json $(ABL_BUILD)/without.json
