@@ -1,6 +1,8 @@
 /* test_readme.c: the README's usage snippet, compiled with the strict warnings and run.
- * mk/readme.mk extracts the snippet into build/readme/snippet.inc; its printf goes to a buffer
- * here, so the test can check what a reader of the README would see. */
+ * mk/readme.mk extracts it (scripts/sync-readme.py --snippet) into build/readme/snippet.inc as
+ * readme_snippet(), with readme_prints: the line README.md says it prints. The snippet's printf
+ * goes to a buffer here, so the test checks what a reader of the README would see. */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include "cylinder_isect.h"
@@ -8,28 +10,42 @@
 
 static char out[512];
 #define printf(...) snprintf(out, sizeof out, __VA_ARGS__)
-static void readme_snippet(void)
-{
 #include "snippet.inc"
-}
 #undef printf
 
-void setUp(void) {}
+void setUp(void) { out[0] = 0; }
 void tearDown(void) {}
 
-/* The snippet's ray enters the unit cylinder's wall at x = -sqrt(1 - 0.5^2): t = 5 - sqrt(0.75),
-   whose correctly rounded double prints as 4.1339745962155616; the normal faces the ray. The
-   whole line is the one README.md says the snippet prints (and the header's QUICK START). */
-static void test_readme_snippet_prints_the_hit(void)
+/* The snippet's ray o = (-5, 0.5, 0.25), d = (1, 0, 0) enters the unit cylinder's wall at
+   x = -sqrt(1 - 0.5^2): t = 5 - sqrt(0.75), inside the caps (z = 0.25, h/2 = 1). The printed t
+   (%.17g, which round-trips a double) must be the double nearest that, the printed bound must
+   contain it and be tight, and the normal (-sqrt(0.75), 0.5, 0) faces the ray. */
+static void test_readme_snippet_finds_the_exact_hit(void)
 {
-    out[0] = 0;
+    double t, t_err, n[3];
+    long double exact = 5.0L - sqrtl(0.75L);
     readme_snippet();
-    TEST_ASSERT_EQUAL_STRING("t = 4.1339745962155616 +- 1.6e-14, n = (-0.866025, 0.5, 0)\n", out);
+    TEST_ASSERT_EQUAL_INT(5, sscanf(out, "t = %lf +- %lf, n = (%lf, %lf, %lf)", &t, &t_err,
+                                    &n[0], &n[1], &n[2]));
+    TEST_ASSERT_TRUE(fabsl((long double)t - exact) <= fabsl((long double)nextafter(t, 0.0) - exact));
+    TEST_ASSERT_TRUE(fabsl((long double)t - exact) <= fabsl((long double)nextafter(t, 10.0) - exact));
+    TEST_ASSERT_TRUE(fabsl((long double)t - exact) <= (long double)t_err && t_err < 1e-12);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, -sqrt(0.75), n[0]);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.5, n[1]);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.0, n[2]);
+}
+
+/* README.md states the snippet's output in the line after it: that line must be what it prints. */
+static void test_readme_states_what_the_snippet_prints(void)
+{
+    readme_snippet();
+    TEST_ASSERT_EQUAL_STRING(readme_prints, out);
 }
 
 int main(void)
 {
     UNITY_BEGIN();
-    RUN_TEST(test_readme_snippet_prints_the_hit);
+    RUN_TEST(test_readme_snippet_finds_the_exact_hit);
+    RUN_TEST(test_readme_states_what_the_snippet_prints);
     return UNITY_END();
 }
