@@ -1,7 +1,26 @@
-# cylinder_isect: build, test and report.
-#   make test    every test build (gcc, clang, C++, sanitizers) and one pass line
-#   make demo    the examples (see mk/examples.mk)
+# cylinder_isect: build, test and check.
+#   make test       the unit tests: Unity suites in every configuration (gcc, clang, C++,
+#                   ASan+UBSan), the accuracy test against the MPFR reference, the fuzz corpus and
+#                   findings replay, the README snippet; ends with one "N passed, M failed" line
+#   make check      make test, then every other check (what CI runs: .ci/run): examples and the
+#                   viewer under Xvfb, cross and embedded builds under qemu, MISRA and
+#                   clang-tidy, C++ compatibility, the install test, a short fuzz run
+#   make demo       the examples (see mk/examples.mk)
+#   make install    the header, a pkg-config file and a CMake package (see mk/install.mk)
 # Area-specific targets live in mk/*.mk, each owned by one part of the project.
+#
+# The convention every fragment follows:
+#   RUNNERS       Unity runners (programs ending with Unity's summary line) that `make test`
+#                 builds and runs; only tests of the library belong here
+#   TEST_PREREQS  other files `make test` builds first (a check a stamp stands for)
+#   CHECK_PREREQS files `make check` builds (its step check-builds): tools and checks that are
+#                 not unit tests, e.g. the benchmark binary
+#   CHECK_TARGETS phony targets, each a step of `make check`; every step runs even when an
+#                 earlier one failed, and `make check` ends with the list of the failed ones
+# Packages: mk/core.deps lists what `make test` needs (and every goal gets); mk/AREA.deps what
+# only AREA's goals need. A goal installs what is missing before any rule runs:
+#   DEPS_GOALS_<area>  the goals that need mk/<area>.deps (set by the fragment, or below)
+# `make check` installs every list; scripts/install-deps.sh TIER|AREA... does the same by hand.
 
 SHELL    := /bin/bash
 CC       ?= cc
@@ -11,6 +30,7 @@ CXX_GCC  ?= g++
 PYTHON   ?= python3
 BUILD    ?= build
 RESULTS  := $(BUILD)/results
+.DEFAULT_GOAL := test
 
 # The warning set every build of the library must pass (issue 2).
 WARN_C   := -std=c99 -pedantic -Wall -Wextra -Werror -Wshadow -Wconversion \
@@ -30,13 +50,24 @@ UNITY_SRC := $(UNITY_FETCHED)
 endif
 UNITY_C    := $(UNITY_SRC)/unity.c
 UNITY_FLAGS := -I$(UNITY_SRC) -DUNITY_INCLUDE_DOUBLE -DUNITY_SUPPORT_64
+UNITY_SHA256 := b90e735a54cf3b3765ab6caa955d11a1488ee73d9c6152cdc98576c2d17cb871:unity.c \
+                9db174d3c2c6424fd35c0980c5941d124c5ebb0f48e8172f997a2aa9554b64ea:unity.h \
+                fcd8b3f6b412ac0ab599547eb8a30b6d7f3f0af77aab31f7a1822a2a8fc9a2b2:unity_internals.h
+# $(call unity_verify,DIR): fails unless DIR holds exactly Unity v2.6.1's three files.
+unity_verify = printf '%s\n' $(foreach s,$(UNITY_SHA256),'$(word 1,$(subst :, ,$(s)))  $(1)/$(word 2,$(subst :, ,$(s)))') \
+  | sha256sum --quiet -c - || { echo "error: Unity sources in $(1) do not match the sha256 of Unity v2.6.1; refusing to build." >&2; exit 1; }
 
+# Fetched from the pinned registry package (never vendored), unpacked, verified.
 $(UNITY_FETCHED)/unity.c:
-	@bash scripts/fetch-unity.sh "$(UNITY_PKG)" "$(UNITY_FETCHED)"
+	@rm -rf $(UNITY_FETCHED).download && mkdir -p $(UNITY_FETCHED).download $(UNITY_FETCHED)
+	@$(PYTHON) -m pip download --quiet --no-deps --disable-pip-version-check "$(UNITY_PKG)" -d $(UNITY_FETCHED).download
+	@$(PYTHON) -m zipfile -e $(UNITY_FETCHED).download/*.whl $(UNITY_FETCHED).download/whl
+	@cp $(addprefix $(UNITY_FETCHED).download/whl/vyperling/c/,unity.c unity.h unity_internals.h) $(UNITY_FETCHED)/
+	@$(call unity_verify,$(UNITY_FETCHED)) || { rm -f $(UNITY_FETCHED)/unity*; exit 1; }
 
 .PHONY: unity
 unity: $(UNITY_C)
-	@bash scripts/check-unity.sh "$(UNITY_SRC)"
+	@$(call unity_verify,$(UNITY_SRC))
 
 # ---------------------------------------------------------------- test builds
 # Each configuration builds every tests/test_*.c into its own runner.
@@ -71,35 +102,66 @@ $(foreach c,$(CONFIGS),$(eval $(call CONFIG_RULES,$(c))))
 
 TEST_BINS := $(foreach c,$(CONFIGS),$(foreach t,$(TEST_NAMES),$(BUILD)/$(c)/$(t)))
 
-# Area fragments add runners to RUNNERS (programs whose output has Unity's summary line)
-# and prerequisites to TEST_PREREQS.
-RUNNERS      := $(TEST_BINS)
-TEST_PREREQS :=
+RUNNERS       := $(TEST_BINS)
+TEST_PREREQS  :=
+CHECK_PREREQS :=
+CHECK_TARGETS :=
 
-# The packages must be there before any rule runs: with -j, make starts the compilers beside
-# the `deps` prerequisite, before it has installed them (seen with `make test -j2` on a fresh
-# machine: clang not found). So the goals that build install first, once, while this file is
-# read; sub-makes inherit CYL_DEPS_DONE and skip it.
-ifneq ($(filter test demo report insn,$(MAKECMDGOALS)),)
+# Runners built with -mfma run only where this machine executes FMA3 (x86-64): mk/bench.mk,
+# mk/fuzz.mk and mk/tests.mk add them when HOST_FMA is 1.
+HOST_FMA := $(shell grep -qw fma /proc/cpuinfo 2>/dev/null && test "$$(uname -m)" = x86_64 && echo 1)
+
+# The goals of fragments whose owners keep no list of their own.
+DEPS_GOALS_bench := report insn ablation
+-include mk/*.mk
+
+# ---------------------------------------------------------------- packages
+# They must be there before any rule runs: with -j, make starts the compilers beside a `deps`
+# prerequisite, before it has installed them (seen with `make test -j2` on a fresh machine:
+# clang not found). So the goals named on the command line install first, once, while this file
+# is read (not for `make -n`); sub-makes inherit CYL_DEPS_DONE and skip it.
+DEPS_AREAS_ALL := $(patsubst mk/%.deps,%,$(wildcard mk/*.deps))
+GOALS          := $(or $(MAKECMDGOALS),$(.DEFAULT_GOAL))
+ifneq ($(filter check,$(GOALS)),)
+DEPS_TIER := check
+else ifneq ($(filter test deps $(foreach a,$(DEPS_AREAS_ALL),$(DEPS_GOALS_$(a))),$(GOALS)),)
+DEPS_TIER := $(or $(foreach a,$(DEPS_AREAS_ALL),$(if $(filter $(DEPS_GOALS_$(a)),$(GOALS)),$(a))),test)
+endif
+ifneq ($(DEPS_TIER),)
 ifneq ($(CYL_DEPS_DONE),1)
-DEPS_RC := $(shell bash scripts/install-deps.sh >&2; echo $$?)
+ifeq ($(findstring n,$(firstword -$(MAKEFLAGS))),)
+DEPS_RC := $(shell bash scripts/install-deps.sh $(DEPS_TIER) >&2; echo $$?)
 ifneq ($(DEPS_RC),0)
-$(error scripts/install-deps.sh failed with exit code $(DEPS_RC))
+$(error scripts/install-deps.sh $(DEPS_TIER) failed with exit code $(DEPS_RC))
 endif
 export CYL_DEPS_DONE := 1
 endif
 endif
-# Runners built with -mfma run only where this machine executes FMA3 (x86-64): mk/bench.mk,
-# mk/fuzz.mk and mk/tests.mk add them when HOST_FMA is 1.
-HOST_FMA := $(shell grep -qw fma /proc/cpuinfo 2>/dev/null && test "$$(uname -m)" = x86_64 && echo 1)
--include mk/*.mk
+endif
 
-.PHONY: test deps
+.PHONY: deps
 deps:
-	@[ "$(CYL_DEPS_DONE)" = 1 ] || bash scripts/install-deps.sh
+	@[ "$(CYL_DEPS_DONE)" = 1 ] || bash scripts/install-deps.sh $(or $(DEPS_TIER),test)
 
+# ---------------------------------------------------------------- the two tiers
+.PHONY: test check check-builds
 test: deps unity $(TEST_PREREQS) $(RUNNERS)
 	@bash scripts/run-tests.sh $(RESULTS) $(RUNNERS)
+
+check-builds: deps unity $(CHECK_PREREQS)
+
+# Each step is its own sub-make (parallel inside with -j); every step runs, the failed ones are
+# listed at the end. CHECK_STEPS="a b" runs only those steps.
+CHECK_STEPS ?= test check-builds $(CHECK_TARGETS)
+check: deps
+	@failed=(); t00=$$SECONDS; \
+	for s in $(CHECK_STEPS); do \
+	  echo "=== $$s"; t0=$$SECONDS; \
+	  if $(MAKE) --no-print-directory $$s; then echo "=== $$s: ok ($$((SECONDS - t0)) s)"; \
+	  else echo "=== $$s: FAILED ($$((SECONDS - t0)) s)"; failed+=("$$s"); fi; \
+	done; \
+	if [ $${#failed[@]} -ne 0 ]; then echo "check: FAILED: $${failed[*]} ($$((SECONDS - t00)) s)"; exit 1; fi; \
+	echo "check: all $(words $(CHECK_STEPS)) steps passed ($$((SECONDS - t00)) s)"
 
 .PHONY: clean
 clean:

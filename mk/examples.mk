@@ -4,7 +4,9 @@
 #   make examples-ref  re-render the reference PNGs (after a reviewed, intended change)
 #   make examples-img  re-render the README images (docs/img/*.png)
 #   make examples-bench  the frames-per-second figures of docs/examples.md
-#   make ci-viewer     the windowed viewer under Xvfb against the headless render (CI)
+#   make examples-test the examples' Unity runner (renders against examples/ref, minimal.c)
+#   make ci-viewer     the windowed viewer under Xvfb against the headless render
+# The last two are steps of `make check` (not of `make test`: they need GLFW, libpng, Xvfb).
 EX_DIR      := $(BUILD)/examples
 EX_SCENES   := $(wildcard examples/scenes/*.txt)
 EX_PKGS     := glfw3 gl libpng
@@ -52,11 +54,14 @@ $(EX_DIR)/test_examples: examples/test_examples.c examples/png_io.h $(BUILD)/gcc
 
 EX_PROGS := $(EX_DIR)/viewer $(EX_DIR)/viewer.clang.ok $(EX_DIR)/pngcmp $(EX_DIR)/minimal \
             $(EX_DIR)/minimal-clang $(EX_DIR)/minimal-cxx
-.PHONY: examples demo examples-ref examples-img ci-viewer examples-bench
+.PHONY: examples demo examples-ref examples-img ci-viewer examples-bench examples-test
 examples: $(EX_PROGS)
 
-TEST_PREREQS += $(EX_PROGS)
-RUNNERS      += $(EX_DIR)/test_examples
+DEPS_GOALS_examples := demo examples examples-ref examples-img examples-bench examples-test ci-viewer
+CHECK_TARGETS += examples-test ci-viewer
+
+examples-test: unity $(EX_PROGS) $(EX_DIR)/test_examples
+	@bash scripts/run-tests.sh $(RESULTS)/examples $(EX_DIR)/test_examples
 
 # Opens the window when a display is there and the window opens (exit code 2 means it did
 # not); otherwise renders headless and says where the PNG is. DEMO_ARGS go to the windowed
@@ -81,8 +86,8 @@ examples-img: $(EX_DIR)/viewer
 	@$(EX_DIR)/viewer --headless --size 640x480 --view error --split \
 	  --out docs/img/pipes-error-split.png examples/scenes/pipes.txt
 
-ci-viewer:
-	@bash scripts/ci-viewer.sh
+ci-viewer: $(EX_DIR)/viewer $(EX_DIR)/pngcmp
+	@BUILD=$(BUILD) bash scripts/viewer-check.sh
 
 # The figures of docs/examples.md: every scene at 640x480 with shadows (the viewer's default
 # settings), frames and rays per second over a full orbit, plus CPU time per frame.

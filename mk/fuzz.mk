@@ -4,8 +4,13 @@
 #   make fuzz-merge       minimise seeds + fuzz/corpus* + what `make fuzz` found into fuzz/corpus*
 #   make fuzz-cov         line and branch coverage of cylinder_isect.h reached by the corpus
 #   make fuzz-replay      only the replay runners (also part of `make test`)
+#   make fuzz-short       each harness for FUZZ_CI_SECONDS (default 35): the step of `make check`
 # Recipe and figures: docs/fuzzing.md.
 FUZZ_SECONDS  ?= 60
+# 2 x 35 s of fuzzing in `make check`, starting from the committed corpora.
+FUZZ_CI_SECONDS ?= 35
+DEPS_GOALS_fuzz := fuzz fuzz-build fuzz-seeds fuzz-merge fuzz-cov fuzz-short
+CHECK_TARGETS += fuzz-short
 FUZZ_DIR      := $(BUILD)/fuzz
 FUZZ_HARNESSES := fuzz_isect fuzz_grid
 FUZZ_CORPUS_fuzz_isect := fuzz/corpus
@@ -51,7 +56,7 @@ $(FUZZ_DIR)/fuzz_grid: fuzz/fuzz_grid.c $(FUZZ_HDRS) $(FUZZ_REF_OBJ_CLANG)
 	@mkdir -p $(@D)
 	$(CLANG) $(FUZZ_CFLAGS) $(FUZZ_REF_DEF) $< -x none $(FUZZ_REF_OBJ_CLANG) $(FUZZ_REF_LIBS) -lm -o $@
 
-.PHONY: fuzz fuzz-build fuzz-seeds fuzz-merge fuzz-cov fuzz-replay
+.PHONY: fuzz fuzz-build fuzz-seeds fuzz-merge fuzz-cov fuzz-replay fuzz-short
 fuzz-build: $(addprefix $(FUZZ_DIR)/,$(FUZZ_HARNESSES))
 
 # Each harness runs on a scratch corpus in build/ plus the committed one (new inputs never land in
@@ -72,6 +77,9 @@ fuzz: fuzz-build
 	    echo "FINDING in $$h (log: $(FUZZ_DIR)/$$h.log; replay: $(FUZZ_DIR)/replay-gcc -v FILE)"; bad=1; \
 	  fi; \
 	done; exit $$bad
+
+fuzz-short:
+	@$(MAKE) --no-print-directory fuzz FUZZ_SECONDS=$(FUZZ_CI_SECONDS)
 
 $(FUZZ_DIR)/gen_seeds: fuzz/gen_seeds.c fuzz/fuzz_check.h cylinder_isect.h
 	@mkdir -p $(@D)

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# CI for the examples (issue 5): the real windowed viewer under Xvfb (Mesa's software OpenGL)
-# renders one frame of the default scene, reads it back from the window with glReadPixels, and
+# make ci-viewer, a step of make check: the real windowed viewer under Xvfb (Mesa's software
+# OpenGL) renders one frame of the default scene, reads it back from the window with glReadPixels, and
 # that frame must equal the headless render of the same view: same size, same settings, every
 # pixel within VIEWER_TOL levels. Exits non-zero on any mismatch or when no window opens.
-# Installs nothing beyond scripts/install-deps.sh (xvfb, xauth, Mesa: mk/examples.deps).
+# Needs build/examples/{viewer,pngcmp} (make builds them first) and mk/examples.deps (xvfb,
+# xauth, Mesa), which make installs for this goal.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 : "${BUILD:=build}"
@@ -13,8 +14,9 @@ SIZE=${SIZE:-640x480}
 # unchanged: no level of difference is allowed.
 VIEWER_TOL=0
 OUT=$BUILD/examples/ci-viewer
-bash scripts/install-deps.sh
-make -s "$BUILD/examples/viewer" "$BUILD/examples/pngcmp" BUILD="$BUILD"
+for b in viewer pngcmp; do
+  [ -x "$BUILD/examples/$b" ] || { echo "ci-viewer: $BUILD/examples/$b missing (make ci-viewer builds it)" >&2; exit 1; }
+done
 mkdir -p "$OUT"
 rm -f "$OUT"/window.png "$OUT"/headless.png
 
