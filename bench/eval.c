@@ -22,52 +22,115 @@ static double ev_now(void)
  * entry point from 20 places, and there gcc keeps it out of line with the options as run-time
  * values: nothing folded, and every variant ran the same code (gcc 12 -O2, up to 85d4d6d).
  * `flatten` inlines into each timing loop what the loop calls, as at a user's single
- * call site; what the header keeps out of line (noinline: the solver, the hand-overs) stays
- * out of line. The accuracy calls need no inlining. Only the benchmark and `make insn`
- * (EV_TIMING) time: the accuracy test's builds of this file skip the inlining, which more than
- * doubles the file's compile time. */
+ * call site; what the header keeps out of line (noinline) stays out of line. The accuracy
+ * calls need no inlining. Only the benchmark (EV_TIMING) times: the accuracy test's builds of
+ * this file skip the inlining, which more than doubles the file's compile time.
+ * Every timing loop has the same shape: its variant's own inputs, prepared by ev_set_inputs,
+ * one call per case, the t of each hit summed. */
 #if (defined(__GNUC__) || defined(__clang__)) && defined(EV_TIMING)
 #define EV_FLATTEN __attribute__((flatten))
 #else
 #define EV_FLATTEN
 #endif
-#define EV_DEF1(P, TAG, FN, OPTS, CAPS)                                                        \
-    static int ev_call_##P##_##TAG##_##CAPS(const void *r, const void *c, void *h)           \
+#define EV_TIME_LOOP(NAME, RAY_T, RAYS, CYL_T, CYLS, HIT_T, CALL)                             \
+    EV_FLATTEN static double NAME(const ev_inputs *in, int reps)                             \
     {                                                                                        \
-        return FN((const cyl##P##_ray *)r, (const cyl##P##_cylinder *)c,                      \
-                  (OPTS) | ((CAPS) ? CYL_CAPS : 0u), (cyl##P##_hit *)h);                      \
-    }                                                                                        \
-    EV_FLATTEN static double ev_time_##P##_##TAG##_##CAPS(const void *rs, const void *cs,     \
-                                                          int n, int reps)                   \
-    {                                                                                        \
-        const cyl##P##_ray *R = (const cyl##P##_ray *)rs;                                     \
-        const cyl##P##_cylinder *C = (const cyl##P##_cylinder *)cs;                           \
-        cyl##P##_hit h;                                                                      \
+        const RAY_T *R = (const RAY_T *)in->RAYS;                                             \
+        const CYL_T *C = (const CYL_T *)in->CYLS;                                             \
+        HIT_T h;                                                                             \
         double acc = 0, t0, t1;                                                              \
-        int k, i;                                                                            \
+        int k, i, n = in->n;                                                                 \
         memset(&h, 0, sizeof h);                                                             \
         t0 = ev_now();                                                                       \
         for (k = 0; k < reps; ++k)                                                           \
             for (i = 0; i < n; ++i)                                                          \
-                if (FN(&R[i], &C[i], (OPTS) | ((CAPS) ? CYL_CAPS : 0u), &h) > 0)             \
-                    acc += (double)h.t;                                                      \
+                if (CALL > 0) acc += (double)h.t;                                            \
         t1 = ev_now();                                                                       \
         ev_sink += acc;                                                                      \
         return t1 - t0;                                                                      \
     }
-#define EV_DEF(P, TAG, FN, OPTS) EV_DEF1(P, TAG, FN, OPTS, 0) EV_DEF1(P, TAG, FN, OPTS, 1)
+
+/* the library: its own ray and cylinder */
+#define EV_LIB1(P, TAG, OPTS, CAPS)                                                          \
+    static int ev_call_##P##_##TAG##_##CAPS(const ev_inputs *in, int i, ev_out *o)          \
+    {                                                                                        \
+        cyl##P##_hit h;                                                                      \
+        memset(&h, 0, sizeof h);                                                             \
+        o->rc = cyl##P##_intersect((const cyl##P##_ray *)in->rays + i,                       \
+                                   (const cyl##P##_cylinder *)in->cyls + i,                  \
+                                   (OPTS) | ((CAPS) ? CYL_CAPS : 0u), &h);                   \
+        o->t = (double)h.t; o->t_err = (double)h.t_err; o->part = h.part;                    \
+        o->flags = h.flags;                                                                  \
+        o->n[0] = (double)h.n[0]; o->n[1] = (double)h.n[1]; o->n[2] = (double)h.n[2];        \
+        return o->rc;                                                                        \
+    }                                                                                        \
+    EV_TIME_LOOP(ev_time_##P##_##TAG##_##CAPS, cyl##P##_ray, rays, cyl##P##_cylinder, cyls,   \
+                 cyl##P##_hit, cyl##P##_intersect(&R[i], &C[i],                              \
+                                                  (OPTS) | ((CAPS) ? CYL_CAPS : 0u), &h))
+#define EV_LIB(P, TAG, OPTS) EV_LIB1(P, TAG, OPTS, 0) EV_LIB1(P, TAG, OPTS, 1)
+
+/* an alternative's answer (0 or 1 + part, t in units of its ray's d, outward n) in the case's
+   units; d: the case's direction (any positive multiple) */
+static void ev_alt_out(int rc, double t, double scale, const double n[3], const double d[3],
+                       ev_out *o)
+{
+    o->rc = rc > 0 ? CYL_HIT : CYL_MISS;
+    o->t = rc > 0 ? t / scale : 0.0;
+    o->t_err = (double)INFINITY;
+    o->part = rc > 0 ? rc - 1 : CYL_SIDE;
+    o->n[0] = n[0]; o->n[1] = n[1]; o->n[2] = n[2];
+    o->flags = rc > 0 && n[0] * d[0] + n[1] * d[1] + n[2] * d[2] > 0 ? CYL_F_INSIDE : 0u;
+}
+#define EV_ALT_OUT(P, RC, H, SCALE, RAY)                                                     \
+    do {                                                                                     \
+        double n_[3], d_[3];                                                                 \
+        int j_;                                                                              \
+        for (j_ = 0; j_ < 3; ++j_) { n_[j_] = (double)(H).n[j_]; d_[j_] = (double)(RAY)->d[j_]; } \
+        ev_alt_out(RC, (double)(H).t, SCALE, n_, d_, o);                                     \
+    } while (0)
+
+/* the literal formulation: the library's ray, its own cylinder (unit axis) */
+#define EV_LIT1(P, CAPS)                                                                     \
+    static int ev_call_##P##_literal_##CAPS(const ev_inputs *in, int i, ev_out *o)          \
+    {                                                                                        \
+        alt##P##_out h;                                                                      \
+        const cyl##P##_ray *ray = (const cyl##P##_ray *)in->rays + i;                        \
+        int rc;                                                                              \
+        memset(&h, 0, sizeof h);                                                             \
+        rc = alt##P##_literal_solve(ray, (const alt##P##_literal_cyl *)in->lit + i,          \
+                                    (CAPS) ? CYL_CAPS : 0u, &h);                             \
+        EV_ALT_OUT(P, rc, h, 1.0, ray);                                                      \
+        return o->rc;                                                                        \
+    }                                                                                        \
+    EV_TIME_LOOP(ev_time_##P##_literal_##CAPS, cyl##P##_ray, rays, alt##P##_literal_cyl, lit, \
+                 alt##P##_out, alt##P##_literal_solve(&R[i], &C[i], (CAPS) ? CYL_CAPS : 0u, &h))
+
+/* the end-point formulation: unit-direction ray, end points (capped only: one loop) */
+#define EV_EP(P)                                                                             \
+    static int ev_call_##P##_endpoint(const ev_inputs *in, int i, ev_out *o)                \
+    {                                                                                        \
+        alt##P##_out h;                                                                      \
+        int rc;                                                                              \
+        memset(&h, 0, sizeof h);                                                             \
+        rc = alt##P##_endpoint_solve((const cyl##P##_ray *)in->ep_rays + i,                  \
+                                     (const alt##P##_endpoint_cyl *)in->ep + i, &h);         \
+        EV_ALT_OUT(P, rc, h, in->ep_scale[i], (const cyl##P##_ray *)in->rays + i);           \
+        return o->rc;                                                                        \
+    }                                                                                        \
+    EV_TIME_LOOP(ev_time_##P##_endpoint, cyl##P##_ray, ep_rays, alt##P##_endpoint_cyl, ep,     \
+                 alt##P##_out, alt##P##_endpoint_solve(&R[i], &C[i], &h))
 
 #define EV_LIST(P)                                                                           \
-    EV_DEF(P, lib, cyl##P##_intersect, 0u)                                                   \
-    EV_DEF(P, precise, cyl##P##_intersect, CYL_PRECISE)                                      \
-    EV_DEF(P, noerr, cyl##P##_intersect, CYL_NO_ERRBOUND)                                    \
-    EV_DEF(P, nonrm, cyl##P##_intersect, CYL_NO_NORMAL)                                      \
-    EV_DEF(P, lean, cyl##P##_intersect, CYL_NO_ERRBOUND | CYL_NO_NORMAL)                     \
-    EV_DEF(P, trusted, cyl##P##_intersect, CYL_TRUSTED)                                      \
-    EV_DEF(P, outward, cyl##P##_intersect, CYL_OUTWARD)                                      \
-    EV_DEF(P, notan, cyl##P##_intersect, CYL_NO_TANGENT)                                     \
-    EV_DEF(P, literal, alt##P##_literal_intersect, 0u)                                       \
-    EV_DEF(P, quilez, alt##P##_quilez_intersect, 0u)
+    EV_LIB(P, lib, 0u)                                                                       \
+    EV_LIB(P, precise, CYL_PRECISE)                                                          \
+    EV_LIB(P, noerr, CYL_NO_ERRBOUND)                                                        \
+    EV_LIB(P, nonrm, CYL_NO_NORMAL)                                                          \
+    EV_LIB(P, lean, CYL_NO_ERRBOUND | CYL_NO_NORMAL)                                         \
+    EV_LIB(P, trusted, CYL_TRUSTED)                                                          \
+    EV_LIB(P, outward, CYL_OUTWARD)                                                          \
+    EV_LIB(P, notan, CYL_NO_TANGENT)                                                         \
+    EV_LIT1(P, 0) EV_LIT1(P, 1)                                                              \
+    EV_EP(P)
 
 EV_LIST(f)
 EV_LIST(d)
@@ -86,35 +149,66 @@ EV_LIST(d)
     EV_ROW(P, PREC, "lib+OUTWARD", EV_LIB, CYL_OUTWARD, outward),                            \
     EV_ROW(P, PREC, "lib+NO_TANGENT", EV_LIB, CYL_NO_TANGENT, notan),                        \
     EV_ROW(P, PREC, "literal", EV_LITERAL, 0u, literal),                                     \
-    EV_ROW(P, PREC, "quilez", EV_QUILEZ, 0u, quilez)
+    {"endpoint", PREC, EV_ENDPOINT, 0u, {ev_call_##P##_endpoint, ev_call_##P##_endpoint},      \
+     {ev_time_##P##_endpoint, ev_time_##P##_endpoint}}
 
 const ev_variant ev_variants[] = {EV_ROWS(f, 24), EV_ROWS(d, 53)};
 const int ev_variant_count = (int)(sizeof ev_variants / sizeof ev_variants[0]);
 
 /* ------------------------------------------------------------------ case sets */
 
-static void to_lib(const bench_case *k, int prec, void *rays, void *cyls, int i)
+/* case k into slot i of every input form */
+static void to_inputs(const bench_case *k, int prec, ev_inputs *in, int i)
 {
+    double dl = sqrt(k->d[0] * k->d[0] + k->d[1] * k->d[1] + k->d[2] * k->d[2]);
     int j;
+    in->ep_scale[i] = dl;
     if (prec == 24) {
-        cylf_ray *r = (cylf_ray *)rays + i;
-        cylf_cylinder *c = (cylf_cylinder *)cyls + i;
+        cylf_ray *r = (cylf_ray *)in->rays + i, *u = (cylf_ray *)in->ep_rays + i;
+        cylf_cylinder *c = (cylf_cylinder *)in->cyls + i;
         for (j = 0; j < 3; ++j) {
             r->o[j] = (float)k->o[j]; r->d[j] = (float)k->d[j];
             c->c[j] = (float)k->c[j]; c->a[j] = (float)k->a[j];
+            u->o[j] = r->o[j]; u->d[j] = (float)(k->d[j] / dl);
         }
         r->tmin = (float)k->tmin; r->tmax = (float)k->tmax;
+        u->tmin = (float)(k->tmin * dl); u->tmax = (float)(k->tmax * dl);
         c->r = (float)k->r; c->h = (float)k->h;
+        altf_literal_from(c, (altf_literal_cyl *)in->lit + i);
+        altf_endpoint_from(c, (altf_endpoint_cyl *)in->ep + i);
     } else {
-        cyld_ray *r = (cyld_ray *)rays + i;
-        cyld_cylinder *c = (cyld_cylinder *)cyls + i;
+        cyld_ray *r = (cyld_ray *)in->rays + i, *u = (cyld_ray *)in->ep_rays + i;
+        cyld_cylinder *c = (cyld_cylinder *)in->cyls + i;
         for (j = 0; j < 3; ++j) {
             r->o[j] = k->o[j]; r->d[j] = k->d[j];
             c->c[j] = k->c[j]; c->a[j] = k->a[j];
+            u->o[j] = r->o[j]; u->d[j] = k->d[j] / dl;
         }
         r->tmin = k->tmin; r->tmax = k->tmax;
+        u->tmin = k->tmin * dl; u->tmax = k->tmax * dl;
         c->r = k->r; c->h = k->h;
+        altd_literal_from(c, (altd_literal_cyl *)in->lit + i);
+        altd_endpoint_from(c, (altd_endpoint_cyl *)in->ep + i);
     }
+}
+
+static void inputs_alloc(ev_inputs *in, int prec, int n)
+{
+    size_t m = (size_t)(n > 0 ? n : 1);
+    in->n = n;
+    in->rays = calloc(m, prec == 24 ? sizeof(cylf_ray) : sizeof(cyld_ray));
+    in->cyls = calloc(m, prec == 24 ? sizeof(cylf_cylinder) : sizeof(cyld_cylinder));
+    in->lit = calloc(m, prec == 24 ? sizeof(altf_literal_cyl) : sizeof(altd_literal_cyl));
+    in->ep_rays = calloc(m, prec == 24 ? sizeof(cylf_ray) : sizeof(cyld_ray));
+    in->ep = calloc(m, prec == 24 ? sizeof(altf_endpoint_cyl) : sizeof(altd_endpoint_cyl));
+    in->ep_scale = (double *)calloc(m, sizeof(double));
+    if (!in->rays || !in->cyls || !in->lit || !in->ep_rays || !in->ep || !in->ep_scale) abort();
+}
+
+static void inputs_free(ev_inputs *in)
+{
+    free(in->rays); free(in->cyls); free(in->lit); free(in->ep_rays); free(in->ep);
+    free(in->ep_scale);
 }
 
 static void ref_case(const bench_case *k, int prec, unsigned opts, cyl_ref_case *in)
@@ -128,21 +222,33 @@ static void ref_case(const bench_case *k, int prec, unsigned opts, cyl_ref_case 
     in->prec = prec;
 }
 
+void ev_set_inputs(ev_set *s, int prec, int family, int caps, uint64_t seed, int n)
+{
+    int i, nt = 0;
+    s->prec = prec; s->family = family; s->caps = caps; s->n = n;
+    s->cases = (bench_case *)calloc((size_t)(n > 0 ? n : 1), sizeof *s->cases);
+    s->ref = NULL;
+    if (!s->cases) abort();
+    for (i = 0; i < n; ++i) {
+        bench_case_gen(family, prec, seed, (uint64_t)i, &s->cases[i]);
+        if (!caps || isfinite(s->cases[i].h)) nt++;
+    }
+    inputs_alloc(&s->all, prec, n);
+    inputs_alloc(&s->timed, prec, nt);
+    for (i = 0, nt = 0; i < n; ++i) {
+        to_inputs(&s->cases[i], prec, &s->all, i);
+        if (!caps || isfinite(s->cases[i].h)) to_inputs(&s->cases[i], prec, &s->timed, nt++);
+    }
+}
+
 void ev_set_make(ev_set *s, int prec, int family, int caps, uint64_t seed, int n)
 {
-    size_t rs = prec == 24 ? sizeof(cylf_ray) : sizeof(cyld_ray);
-    size_t cs = prec == 24 ? sizeof(cylf_cylinder) : sizeof(cyld_cylinder);
     int i;
-    s->prec = prec; s->family = family; s->caps = caps; s->n = n;
-    s->cases = (bench_case *)calloc((size_t)n, sizeof *s->cases);
-    s->rays = calloc((size_t)n, rs);
-    s->cyls = calloc((size_t)n, cs);
-    s->ref = (cyl_ref_result *)calloc((size_t)n, sizeof *s->ref);
-    if (!s->cases || !s->rays || !s->cyls || !s->ref) abort();
+    ev_set_inputs(s, prec, family, caps, seed, n);
+    s->ref = (cyl_ref_result *)calloc((size_t)(n > 0 ? n : 1), sizeof *s->ref);
+    if (!s->ref) abort();
     for (i = 0; i < n; ++i) {
         cyl_ref_case in;
-        bench_case_gen(family, prec, seed, (uint64_t)i, &s->cases[i]);
-        to_lib(&s->cases[i], prec, s->rays, s->cyls, i);
         ref_case(&s->cases[i], prec, caps ? CYL_CAPS : 0u, &in);
         cyl_ref_intersect(&in, &s->ref[i]);
     }
@@ -150,23 +256,37 @@ void ev_set_make(ev_set *s, int prec, int family, int caps, uint64_t seed, int n
 
 void ev_set_free(ev_set *s)
 {
-    free(s->cases); free(s->rays); free(s->cyls); free(s->ref);
+    free(s->cases); free(s->ref);
+    inputs_free(&s->all);
+    inputs_free(&s->timed);
     memset(s, 0, sizeof *s);
+}
+
+void ev_run(const ev_variant *v, const ev_set *s, int i, ev_out *o)
+{
+    memset(o, 0, sizeof *o);
+    v->call[s->caps ? 1 : 0](&s->all, i, o);
+}
+
+int ev_expressible(const ev_variant *v, const ev_set *s, int i)
+{
+    return v->kind != EV_ENDPOINT || (s->caps && isfinite(s->cases[i].h));
 }
 
 int ev_variant_available(const ev_variant *v)
 {
-    if (v->prec == 24) {
-        cylf_ray r = {{0, -5, 0}, {0, 1, 0}, 0.0f, 100.0f};
-        cylf_cylinder c = {{0, 0, 0}, {0, 0, 1}, 1.0f, 2.0f};
-        cylf_hit h;
-        return v->call[0](&r, &c, &h) >= 0;
-    } else {
-        cyld_ray r = {{0, -5, 0}, {0, 1, 0}, 0.0, 100.0};
-        cyld_cylinder c = {{0, 0, 0}, {0, 0, 1}, 1.0, 2.0};
-        cyld_hit h;
-        return v->call[0](&r, &c, &h) >= 0;
-    }
+    /* one case the library answers in every build: CYL_PRECISE compiled out returns an
+       error code */
+    static const bench_case k = {{0, -5, 0}, {0, 1, 0}, 0.0, 100.0, {0, 0, 0}, {0, 0, 1}, 1.0,
+                                 2.0, 0};
+    ev_inputs in;
+    ev_out o;
+    int rc;
+    inputs_alloc(&in, v->prec, 1);
+    to_inputs(&k, v->prec, &in, 0);
+    rc = v->call[1](&in, 0, &o);
+    inputs_free(&in);
+    return rc >= 0;
 }
 
 /* ------------------------------------------------------------------ metrics */
@@ -212,33 +332,6 @@ static int cmp_dbl(const void *a, const void *b)
     return x < y ? -1 : x > y ? 1 : 0;
 }
 
-typedef struct ev_out {
-    int rc;
-    double t, t_err, n[3];
-    int part;
-    unsigned flags;
-} ev_out;
-
-static void run_one(const ev_variant *v, const ev_set *s, int i, ev_out *o)
-{
-    if (s->prec == 24) {
-        cylf_hit h;
-        memset(&h, 0, sizeof h);
-        o->rc = v->call[s->caps ? 1 : 0]((const cylf_ray *)s->rays + i,
-                                         (const cylf_cylinder *)s->cyls + i, &h);
-        o->t = (double)h.t; o->t_err = (double)h.t_err; o->part = h.part; o->flags = h.flags;
-        o->n[0] = (double)h.n[0]; o->n[1] = (double)h.n[1]; o->n[2] = (double)h.n[2];
-    } else {
-        cyld_hit h;
-        memset(&h, 0, sizeof h);
-        o->rc = v->call[s->caps ? 1 : 0]((const cyld_ray *)s->rays + i,
-                                         (const cyld_cylinder *)s->cyls + i, &h);
-        o->t = h.t; o->t_err = h.t_err; o->part = h.part; o->flags = h.flags;
-        o->n[0] = h.n[0]; o->n[1] = h.n[1]; o->n[2] = h.n[2];
-    }
-}
-
-
 /* A hit farther than this from the reference t (relative to max(|t|, r/|d|)) is a different
    crossing, not an inaccurate one: even tangent contacts are within about sqrt(u) < 2^-8.
    A wall hit whose CYL_F_INSIDE differs from the reference's is the other crossing too (the
@@ -256,16 +349,16 @@ static void check_all(const ev_variant *v, const ev_set *s, int i, const cyl_ref
     unsigned fl[2] = {0u, 0u};
     if (s->prec == 24) {
         cylf_hit h[2];
-        const cylf_ray *ray = (const cylf_ray *)s->rays + i;
-        const cylf_cylinder *cyl = (const cylf_cylinder *)s->cyls + i;
+        const cylf_ray *ray = (const cylf_ray *)s->all.rays + i;
+        const cylf_cylinder *cyl = (const cylf_cylinder *)s->all.cyls + i;
         memset(h, 0, sizeof h);
         cnt = cylf_intersect_all(ray, cyl, opts, h);
         occ = cylf_occluded(ray, cyl, opts);
         for (j = 0; j < 2; ++j) { t[j] = (double)h[j].t; part[j] = h[j].part; fl[j] = h[j].flags; }
     } else {
         cyld_hit h[2];
-        const cyld_ray *ray = (const cyld_ray *)s->rays + i;
-        const cyld_cylinder *cyl = (const cyld_cylinder *)s->cyls + i;
+        const cyld_ray *ray = (const cyld_ray *)s->all.rays + i;
+        const cyld_cylinder *cyl = (const cyld_cylinder *)s->all.cyls + i;
         memset(h, 0, sizeof h);
         cnt = cyld_intersect_all(ray, cyl, opts, h);
         occ = cyld_occluded(ray, cyl, opts);
@@ -305,7 +398,7 @@ void ev_eval(const ev_variant *v, const ev_set *s, ev_stats *st)
         ev_out o;
         int lib_hit, ref_hit, wrong = 0;
 
-        if (v->kind == EV_QUILEZ && (!s->caps || !isfinite(k->h))) continue; /* cannot express */
+        if (!ev_expressible(v, s, i)) continue;   /* the end-point form cannot express it */
         if ((v->opts & CYL_NO_TANGENT) && fabs(ref->e) <= 4 * tol_t) {
             cyl_ref_case in;
             ref_case(k, s->prec, (s->caps ? CYL_CAPS : 0u) | CYL_NO_TANGENT, &in);
@@ -313,7 +406,7 @@ void ev_eval(const ev_variant *v, const ev_set *s, ev_stats *st)
             ref = &ref_nt;
         }
         st->n++;
-        run_one(v, s, i, &o);
+        ev_run(v, s, i, &o);
         if (o.rc < 0) st->n_error++;
         lib_hit = o.rc == CYL_HIT;
         ref_hit = ref->status == CYL_HIT;
@@ -363,7 +456,9 @@ void ev_eval(const ev_variant *v, const ev_set *s, ev_stats *st)
             /* at a tangency the normal is perpendicular to d: which side "faces the ray" is
                a coin toss, so normals are judged outside the band only */
             if (!(v->opts & CYL_NO_NORMAL) && ref->margin > band) {
-                double sg = ((v->opts & CYL_OUTWARD) && (rh->flags & CYL_F_INSIDE)) ? -1.0 : 1.0;
+                /* outward normals: the library with CYL_OUTWARD, and the alternatives */
+                int outward = (v->opts & CYL_OUTWARD) || v->kind != EV_LIB;
+                double sg = (outward && (rh->flags & CYL_F_INSIDE)) ? -1.0 : 1.0;
                 double dx = o.n[0] - sg * rh->n[0], dy = o.n[1] - sg * rh->n[1],
                        dz = o.n[2] - sg * rh->n[2];
                 double ne = sqrt(dx * dx + dy * dy + dz * dz);

@@ -8,18 +8,36 @@
 #include "cyl_ref.h"
 #include "cases.h"
 
-enum { EV_LIB, EV_LITERAL, EV_QUILEZ };
+enum { EV_LIB, EV_LITERAL, EV_ENDPOINT };
 
-typedef int (*ev_call_fn)(const void *ray, const void *cyl, void *hit);
-typedef double (*ev_time_fn)(const void *rays, const void *cyls, int n, int reps);
+/* One set's cases in every variant's own input form, prepared before any call is timed. */
+typedef struct ev_inputs {
+    int n;
+    void *rays, *cyls;      /* cylf_ or cyld_ ray and cylinder: the library; literal's ray */
+    void *lit;              /* altf_/altd_literal_cyl (unit axis) */
+    void *ep_rays, *ep;     /* unit-direction rays (t range scaled), altf_/altd_endpoint_cyl */
+    double *ep_scale;       /* |d|: a case's t is the unit-direction ray's t / |d| */
+} ev_inputs;
+
+/* One variant's answer for one case, in the case's units. The alternatives' normals are
+   outward (they do not turn them towards the ray) and their t_err is +INFINITY. */
+typedef struct ev_out {
+    int rc;
+    double t, t_err, n[3];
+    int part;
+    unsigned flags;
+} ev_out;
+
+typedef int (*ev_call_fn)(const ev_inputs *in, int i, ev_out *o);
+typedef double (*ev_time_fn)(const ev_inputs *in, int reps);
 
 typedef struct ev_variant {
-    const char *name;       /* "lib", "lib+PRECISE", "literal", ... */
+    const char *name;       /* "lib", "lib+PRECISE", "literal", "endpoint", ... */
     int prec;               /* 24 (float) or 53 (double) */
-    int kind;               /* EV_LIB, EV_LITERAL, EV_QUILEZ */
-    unsigned opts;          /* option bits other than CYL_CAPS */
+    int kind;               /* EV_LIB, EV_LITERAL, EV_ENDPOINT */
+    unsigned opts;          /* the library's option bits other than CYL_CAPS (0 for the others) */
     ev_call_fn call[2];     /* [caps]: one call with constant options */
-    ev_time_fn time[2];     /* [caps]: seconds for reps passes over n cases */
+    ev_time_fn time[2];     /* [caps]: seconds for reps passes over in->n cases */
 } ev_variant;
 
 extern const ev_variant ev_variants[];
@@ -29,10 +47,16 @@ extern const int ev_variant_count;
 typedef struct ev_set {
     int prec, family, caps, n;
     bench_case *cases;
-    void *rays, *cyls;          /* cylf_ or cyld_ arrays */
-    cyl_ref_result *ref;
+    ev_inputs all;              /* every case: the accuracy */
+    ev_inputs timed;            /* the cases timed and counted: with caps those of finite
+                                   height (the end-point formulation cannot express the
+                                   others, and every variant runs the same cases); without
+                                   caps every case */
+    cyl_ref_result *ref;        /* NULL from ev_set_inputs */
 } ev_set;
 
+/* The cases and their inputs, then (ev_set_make) the exact reference answers. */
+void ev_set_inputs(ev_set *s, int prec, int family, int caps, uint64_t seed, int n);
 void ev_set_make(ev_set *s, int prec, int family, int caps, uint64_t seed, int n);
 void ev_set_free(ev_set *s);
 
@@ -57,8 +81,13 @@ typedef struct ev_stats {
     int terr_fail_index;
     int all_miscls, all_miscls_out;   /* intersect_all: count, part or crossing differs */
     int occ_miscls, occ_miscls_out;   /* occluded differs from "the reference has a hit" */
-    double ns_per_call;         /* filled by bench.c's timing */
 } ev_stats;
+
+/* One call of a variant on case i of the set (every case). */
+void ev_run(const ev_variant *v, const ev_set *s, int i, ev_out *o);
+
+/* Can this variant express case i (the end-point formulation: capped, finite height)? */
+int ev_expressible(const ev_variant *v, const ev_set *s, int i);
 
 /* Accuracy of a variant on a set. */
 void ev_eval(const ev_variant *v, const ev_set *s, ev_stats *st);

@@ -50,23 +50,17 @@ int main(int argc, char **argv)
                ref->hit[j].v, ref->hit[j].n[0], ref->hit[j].n[1], ref->hit[j].n[2]);
     for (i = 0; i < ev_variant_count; ++i) {
         const ev_variant *v = &ev_variants[i];
+        ev_out o;
         double t, te;
         int rc, part;
         unsigned fl;
         if (v->prec != prec) continue;
-        if (prec == 24) {
-            cylf_hit h;
-            memset(&h, 0, sizeof h);
-            rc = v->call[caps]((const cylf_ray *)s.rays + idx, (const cylf_cylinder *)s.cyls + idx,
-                               &h);
-            t = (double)h.t; te = (double)h.t_err; part = h.part; fl = h.flags;
-        } else {
-            cyld_hit h;
-            memset(&h, 0, sizeof h);
-            rc = v->call[caps]((const cyld_ray *)s.rays + idx, (const cyld_cylinder *)s.cyls + idx,
-                               &h);
-            t = h.t; te = h.t_err; part = h.part; fl = h.flags;
+        if (!ev_expressible(v, &s, idx)) {
+            printf("  %-27s cannot express this case\n", v->name);
+            continue;
         }
+        ev_run(v, &s, idx, &o);
+        rc = o.rc; t = o.t; te = o.t_err; part = o.part; fl = o.flags;
         printf("  %-27s rc %2d", v->name, rc);
         if (rc == CYL_HIT)
             printf("  t %.17g  t_err %.3g  part %d  flags %u  ulps %.3g  within %d", t, te, part,

@@ -1,14 +1,18 @@
 #!/usr/bin/env python3
-"""report.py: bench/REPORT.md and bench/error_vs_time.png from build/bench/results.json.
+"""report.py: bench/REPORT.md, bench/error_vs_time.png and docs/accuracy.md's table.
 
-    python bench/report.py RESULTS.json REPORT.md PLOT.png [DOC.md]   (run by `make report`)
+    python bench/report.py --results RESULTS.json [--times T2.json ...] --insn INSN.tsv \
+        --md REPORT.md --png PLOT.png [--doc DOC.md]                      (run by `make report`)
+    python bench/report.py --insn-table INSN.tsv                          (run by `make insn`)
 
-DOC.md (docs/accuracy.md) gets the headline and targets tables between its
-<!-- headline:begin --> and <!-- headline:end --> markers, so the two never drift.
-
-Needs matplotlib (installed by the Makefile into build/report-venv). All numbers come from the
-JSON written by build/bench/bench; nothing here is measured.
+RESULTS.json: build/bench/bench's accuracy and first timing; T*.json: more timing runs of the
+same binary (--time-only); every ns shown is the median over the runs, every time ratio the
+median of the runs' ratios. INSN.tsv: instructions per call under callgrind (mk/bench.mk).
+DOC.md (docs/accuracy.md) gets the accuracy-and-cost table between its <!-- headline:begin -->
+and <!-- headline:end --> markers. Needs matplotlib for the plot (build/report-venv). Every
+number comes from those files; nothing here is measured.
 """
+import argparse
 import json
 import math
 import os
@@ -20,7 +24,15 @@ GROUPS = {
     "benign": ["well", "axis", "huge", "tiny", "surface", "trange"],
     "stiff": ["far", "parallel", "grazing", "thin", "flat"],
 }
-HEADLINE = ["lib", "lib+PRECISE", "lib+NO_ERRBOUND+NO_NORMAL", "literal", "quilez"]
+HEADLINE = ["lib", "lib+NO_ERRBOUND+NO_NORMAL", "lib+PRECISE", "endpoint", "literal"]
+LABEL = {"lib": "lib (default)", "lib+NO_ERRBOUND+NO_NORMAL": "lib NO_ERRBOUND+NO_NORMAL",
+         "lib+PRECISE": "lib PRECISE", "endpoint": "end-point (pa, pb, ra)",
+         "literal": "literal (c, unit a, r, h)"}
+# the cost targets of issue 17: instructions per capped call on the well-conditioned family as
+# a ratio to the end-point routine (judged, PASS/FAIL), and the time ratio's aim (reported)
+COST_TARGETS = [("lib+NO_ERRBOUND+NO_NORMAL", 1.3, 1.15), ("lib", 2.0, 1.5),
+                ("lib+PRECISE", 3.0, 2.5)]
+COST_FAMILY = "well"
 ERR_FLOOR = 0.01          # ulps plotted in place of an error of exactly 0
 PNAME = {24: "float", 53: "double"}
 
@@ -81,25 +93,83 @@ def agg(rows):
 TARGET2_FAMILIES = ["well", "huge", "tiny", "axis"]  # target 2's benign families
 
 
-def time_ratios(R, prec, lib, alt):
-    """lib/alt time per family x caps set where both ran, and over all those sets (summed
-    ns: every set has the same number of cases). R: the benchmark's JSON."""
-    ns = {(r["family"], r["caps"], r["variant"]): r["ns"] for r in R["rows"] if r["prec"] == prec}
-    rs, ta, tb = [], 0.0, 0.0
-    for fam in R["families"]:
-        for caps in (0, 1):
-            if (fam, caps, lib) in ns and (fam, caps, alt) in ns:
-                rs.append(ns[(fam, caps, lib)] / ns[(fam, caps, alt)])
-                ta += ns[(fam, caps, lib)]
-                tb += ns[(fam, caps, alt)]
-    return rs, (ta / tb if tb else float("nan"))
+def median(xs):
+    xs = sorted(x for x in xs if not math.isnan(x))
+    if not xs:
+        return float("nan")
+    m = len(xs) // 2
+    return xs[m] if len(xs) % 2 else (xs[m - 1] + xs[m]) / 2
+
+
+def key(r):
+    return (r["prec"], r["family"], r["caps"], r["variant"])
+
+
+def read_insn(path):
+    """(prec, family, caps, variant) -> instructions per call, from mk/bench.mk's insn.tsv"""
+    out = {}
+    with open(path) as f:
+        for line in f:
+            p = line.rstrip("\n").split("\t")
+            if len(p) == 6:
+                out[(int(p[0]), p[1], int(p[2]), p[3])] = float(p[5])
+    return out
+
+
+def insn_table(path):
+    """`make insn`: the counts of the headline variants, capped sets, and the cost ratios."""
+    I = read_insn(path)
+    fams = list(dict.fromkeys(k[1] for k in I))
+    print("Instructions per capped call (callgrind; the empty loop subtracted)\n")
+    print("| precision | family | " + " | ".join(LABEL[v] for v in HEADLINE) + " |")
+    print("|---|---|" + "---:|" * len(HEADLINE))
+    for prec in (24, 53):
+        for fam in fams:
+            print(f"| {PNAME[prec]} | {fam} | " +
+                  " | ".join(fmt(I.get((prec, fam, 1, v)), 4) for v in HEADLINE) + " |")
+    print()
+    for prec in (24, 53):
+        ep = I.get((prec, COST_FAMILY, 1, "endpoint"))
+        for v, lim, _ in COST_TARGETS:
+            x = I.get((prec, COST_FAMILY, 1, v))
+            if x is None or not ep:
+                continue
+            print(f"{PNAME[prec]} {v} / endpoint, {COST_FAMILY} capped: {x / ep:.2f} "
+                  f"(target <= {lim}): {'PASS' if x / ep <= lim else 'FAIL'}")
 
 
 def main():
-    res_path, md_path, png_path = sys.argv[1:4]
-    with open(res_path) as f:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--insn-table")
+    ap.add_argument("--results")
+    ap.add_argument("--times", nargs="*", default=[])
+    ap.add_argument("--insn")
+    ap.add_argument("--md")
+    ap.add_argument("--png")
+    ap.add_argument("--doc")
+    args = ap.parse_args()
+    if args.insn_table:
+        insn_table(args.insn_table)
+        return
+    if not (args.results and args.insn and args.md and args.png):
+        ap.error("--results, --insn, --md and --png are needed")
+    png_path = args.png
+    with open(args.results) as f:
         R = json.load(f)
+    runs = [{key(r): r["ns"] for r in R["rows"]}]
+    for t in args.times:
+        with open(t) as f:
+            T = json.load(f)
+        if T["seed"] != R["seed"] or T["n"] != R["n"]:
+            sys.exit(f"report: {t} is not a timing of the same cases as {args.results}")
+        runs.append({key(r): r["ns"] for r in T["rows"]})
+    INSN = read_insn(args.insn)
     rows = R["rows"]
+    for r in rows:   # every ns shown: the median over the runs
+        r["ns_runs"] = [run[key(r)] for run in runs if key(r) in run]
+        r["ns"] = median(r["ns_runs"])
+        r["insn"] = INSN.get(key(r))
+    nruns = len(runs)
     variants = []
     for r in rows:
         if (r["prec"], r["variant"]) not in variants:
@@ -112,12 +182,26 @@ def main():
                 and (fams is None or r["family"] in fams)
                 and (caps is None or r["caps"] == caps)]
 
+    def one(prec, fam, caps, v):
+        rs = sel(prec, v, [fam], caps)
+        return rs[0] if rs else None
+
+    def time_ratio(prec, fam, caps, v, alt):
+        """median over the runs of the run's time ratio v / alt"""
+        k, ka = (prec, fam, caps, v), (prec, fam, caps, alt)
+        return median([run[k] / run[ka] for run in runs if k in run and ka in run and run[ka]])
+
+    def insn_ratio(prec, fam, caps, v, alt):
+        x, y = INSN.get((prec, fam, caps, v)), INSN.get((prec, fam, caps, alt))
+        return x / y if x is not None and y else float("nan")
+
     L = []
     now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
-    L.append("# cylinder_isect: error against run time\n")
+    L.append("# cylinder_isect: error and cost against the alternatives\n")
     L.append(f"Generated by `make report` on {now}. Regenerate with `make report` "
-             f"(options: `BENCH_SEED=... BENCH_N=...`); the raw numbers are in "
-             f"`build/bench/results.json`, a single case is shown in full by "
+             f"(options: `BENCH_SEED=... BENCH_N=... BENCH_RUNS=...`); the raw numbers are in "
+             f"`build/bench/results.json`, `build/bench/times-*.json` and "
+             f"`build/bench/insn.tsv`, a single case is shown in full by "
              f"`build/bench/probe PREC FAMILY CAPS INDEX`.\n")
     L.append("| | |\n|---|---|")
     L.append(f"| machine | {cpu_model()}, {os.cpu_count()} logical cores, {platform.machine()}, "
@@ -127,13 +211,27 @@ def main():
     L.append(f"| seed | {R['seed']} |")
     L.append(f"| cases | {R['n']} per family x caps on/off x precision; every variant runs the "
              f"same cases |")
-    L.append(f"| timing | throughput over the family's cases, {R['rounds']} interleaved rounds of "
-             f"~{R['block_ms']} ms per variant, fastest round; each variant's loop inlines the "
-             f"library with its options folded, as at a user's single call site; shared "
-             f"machine, so compare ratios |")
+    L.append(f"| time | ns per call: throughput over the set's cases, {R['rounds']} interleaved "
+             f"rounds of ~{R['block_ms']} ms per variant, fastest round; the median of "
+             f"{nruns} runs of the benchmark (time ratios: the median of the {nruns} runs' "
+             f"ratios); each variant's loop inlines its routine with its options folded, as at "
+             f"a user's single call site; shared machine |")
+    L.append("| instructions | per call, counted by callgrind in the same binary's timing loops "
+             "(one pass over the same cases), the empty loop subtracted; exact, the same on "
+             "every run |")
+    L.append("| timed cases | capped sets: the cases of finite height (the end-point formulation "
+             "cannot express an infinite one), for every variant; open sets: every case |")
     if R.get("unavailable"):
         L.append(f"| not available in this build | {', '.join(R['unavailable'])} |")
     L.append("")
+    L.append("Inputs: the library takes its ray (o, d, tmin, tmax) and cylinder (c, a, r, h) as "
+             "generated. The alternatives take theirs in their own form, prepared before any "
+             "call is timed: **literal**: the same ray, the cylinder with a unit axis a/|a|; "
+             "**end-point** (pa, pb, ra; Quilez's capped-cylinder formulation): pa = c − â h/2, "
+             "pb = c + â h/2, ra = r and a unit direction d/|d| (t range scaled by |d|, its t "
+             "divided by |d| for the comparison). Each returns t and the outward normal only. "
+             "Their errors include the rounding of that preparation (about an ulp of the data), "
+             "which their users holding data in that form would not have.\n")
     L.append("Reference: `ref/cyl_ref.c`, exact polynomial quantities in MPFR (precision grows "
              "with the exponent span, every operation checked exact), roots at >= 320 bits. "
              "**Misclassified**: hit vs miss, wrong part or wrong crossing. **Margin**: relative "
@@ -146,25 +244,48 @@ def main():
              "outside [t - t_err, t + t_err] (must be 0).\n")
 
     # ---------------------------------------------------------------- headline
-    L.append("## Headline (all families, caps on and off)\n")
-    L.append("| precision | variant | cases | misclassified (beyond band) | max ulps (cond) "
-             "| p99 ulps | max rel error | max n error | t_err fail | ns/call |")
-    L.append("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+    HEAD = "## Headline: accuracy over all families (caps on and off), cost per capped call\n"
+    L.append(HEAD)
+    hl = []
     for prec in (24, 53):
         for v in HEADLINE:
             rs = sel(prec, v)
             if not rs:
                 continue
             a = agg(rs)
-            tf = f"{a['terr_fail']}/{a['terr_checked']}" if a["terr_checked"] else "-"
-            L.append(f"| {PNAME[prec]} | {v} | {a['n']} | {a['miscls']} ({a['miscls_out']}) | "
-                     f"{fmt(a['cond_ulp_max'])} | {fmt(a['ulp_p99'])} | {fmt(a['rel_max'])} | "
-                     f"{fmt(a['nrm_max'])} | {tf} | {fmt(a['ns'], 3)} |")
-    L.append("\nquilez runs on capped cases of finite height only (its formulation cannot "
-             "express the open or infinite tube); its time is over those cases.\n")
+            w = one(prec, COST_FAMILY, 1, v)
+            tf = f"{a['terr_fail']} of {a['terr_checked']}" if a["terr_checked"] else "-"
+            hl.append((f"{PNAME[prec]} {LABEL[v]}", fmt(w["ns"], 3) if w else "-",
+                       fmt(w["insn"], 4) if w else "-", str(a["miscls_out"]),
+                       fmt(a["cond_ulp_max"]), tf))
+    hl_head = ("| variant | ns per call | instructions per call | misclassified beyond the band "
+               "| worst ulps, well-conditioned hits | t_err failures |\n"
+               "|---|---:|---:|---:|---:|---:|")
+    hl_lines = [hl_head] + ["| " + " | ".join(x) + " |" for x in hl]
+    hl_notes = [
+        f"- **variant**: float or double API; the library with its default options, with "
+        f"`CYL_NO_ERRBOUND|CYL_NO_NORMAL` and with `CYL_PRECISE`; the end-point (pa, pb, ra) "
+        f"and the literal formulations, each fed its own input form (bench/alt_formulations.h).",
+        f"- **ns per call**: time per capped call on the well-conditioned family, median of "
+        f"{nruns} benchmark runs on this machine ({cpu_model()}, `{R.get('cflags', '?')}`).",
+        "- **instructions per call**: the same calls counted by callgrind in the same binary, "
+        "exact and repeatable where time is not.",
+        f"- **misclassified beyond the band**: hit/miss, part or crossing different from the "
+        f"exact answer although the case is farther than 2^-(p-8) from any decision boundary, "
+        f"over all {len(R['families'])} families with and without caps ({R['n']} cases each; the "
+        f"end-point routine only on the capped cases of finite height it can express).",
+        "- **worst ulps, well-conditioned hits**: largest |t − t_exact| in ulps of t_exact where "
+        "a relative change u of the data moves t by at most one ulp.",
+        "- **t_err failures**: hits whose exact t lies outside [t − t_err, t + t_err], of those "
+        "checked; `-`: no error bound.",
+    ]
+    L.extend(hl_lines)
+    L.append("")
+    L.extend(hl_notes)
+    L.append("")
 
     # ---------------------------------------------------------------- targets
-    L.append("## Targets of issue 3\n")
+    L.append("## Targets (issues 3 and 17)\n")
     L.append("| target | precision | result | numbers |")
     L.append("|---|---|---|---|")
     for prec in (24, 53):
@@ -188,13 +309,10 @@ def main():
             continue
         a = agg(rs)
         ok = a["miscls_out"] + a["all_out"] + a["occ_out"] == 0 and a["cond_ulp_max"] <= 2
-        ratios = []
-        for fam in R["families"]:
-            for caps in (0, 1):
-                p = sel(prec, "lib+PRECISE", [fam], caps)
-                d = sel(prec, "lib", [fam], caps)
-                if p and d:
-                    ratios.append(p[0]["ns"] / d[0]["ns"])
+        ratios = [time_ratio(prec, fam, caps, "lib+PRECISE", "lib")
+                  for fam in R["families"] for caps in (0, 1)
+                  if one(prec, fam, caps, "lib+PRECISE") and one(prec, fam, caps, "lib")]
+        ratios = [x for x in ratios if not math.isnan(x)]
         rmax = max(ratios) if ratios else float("nan")
         rmean = sum(ratios) / len(ratios) if ratios else float("nan")
         L.append(f"| 3. CYL_PRECISE, all families: no misclassification beyond band, t within "
@@ -204,26 +322,37 @@ def main():
                  f"{fmt(a['cond_ulp_max'])} ulps over {a['cond_n']} hits |")
         L.append(f"| 3. CYL_PRECISE at most 2x the default path's time | {PNAME[prec]} | "
                  f"{'PASS' if rmax <= 2 else 'FAIL'} | time ratio mean {fmt(rmean)}, worst "
-                 f"{fmt(rmax)} over family x caps |")
+                 f"{fmt(rmax)} over family x caps (each the median of {nruns} runs) |")
     for prec in (24, 53):
-        # PASS needs every family x caps set within the target. The same outputs: neither
-        # alternative computes an error bound, so lib+NO_ERRBOUND returns what they return
-        # (t, part, normal); shown beside, PASS is judged on lib as it is.
-        for alt, name, lim, cmp in (("quilez", "<= 1.3x the end-point (Quilez) formulation",
-                                     1.3, "<="),
-                                    ("literal", "faster than the literal formulation", 1.0,
-                                     "<")):
-            rs, allr = time_ratios(R, prec, "lib", alt)
-            if not rs:
-                continue
-            ok = max(rs) <= lim if cmp == "<=" else max(rs) < lim
-            ne, ne_all = time_ratios(R, prec, "lib+NO_ERRBOUND", alt)
-            same = (f"; the same outputs (lib+NO_ERRBOUND): worst {fmt(max(ne))}, all sets "
-                    f"{fmt(ne_all)}" if ne else "")
-            L.append(f"| 4. default path {name} | {PNAME[prec]} | {'PASS' if ok else 'FAIL'} | "
-                     f"lib/{alt} time mean {fmt(sum(rs) / len(rs))}, worst {fmt(max(rs))}, "
-                     f"all sets {fmt(allr)}{' (capped sets)' if alt == 'quilez' else ''}"
-                     f"{same} |")
+        for v, lim, aim in COST_TARGETS:
+            ir = insn_ratio(prec, COST_FAMILY, 1, v, "endpoint")
+            tr = time_ratio(prec, COST_FAMILY, 1, v, "endpoint")
+            x, y = INSN.get((prec, COST_FAMILY, 1, v)), INSN.get((prec, COST_FAMILY, 1, "endpoint"))
+            res = "n/a" if math.isnan(ir) else ("PASS" if ir <= lim else "FAIL")
+            L.append(f"| 4. {v}: instructions per capped call on the {COST_FAMILY} family at most "
+                     f"{lim}x the end-point routine's | {PNAME[prec]} | {res} | {fmt(ir, 3)}x "
+                     f"({fmt(x, 4)} / {fmt(y, 4)}); time {fmt(tr, 3)}x (median of {nruns} runs; "
+                     f"aim {aim}x: {'met' if tr <= aim else 'not met'}) |")
+    L.append("")
+
+    # ---------------------------------------------------------------- cost per family
+    L.append("## Cost per capped call, every family\n")
+    L.append("Instructions per call / ns per call of each variant, and the ratios of "
+             "target 4 (instructions; time in parentheses) to the end-point routine. Target 4 "
+             f"is judged on {COST_FAMILY} only.\n")
+    L.append("| precision | family | " + " | ".join(LABEL[v] for v in HEADLINE) + " | " +
+             " | ".join(f"{LABEL[v]} / end-point" for v, _, _ in COST_TARGETS) + " |")
+    L.append("|---|---|" + "---:|" * (len(HEADLINE) + len(COST_TARGETS)))
+    for prec in (24, 53):
+        for fam in R["families"]:
+            cells = []
+            for v in HEADLINE:
+                r = one(prec, fam, 1, v)
+                cells.append(f"{fmt(r['insn'], 4)} / {fmt(r['ns'], 3)}" if r else "-")
+            for v, _, _ in COST_TARGETS:
+                cells.append(f"{fmt(insn_ratio(prec, fam, 1, v, 'endpoint'), 3)} "
+                             f"({fmt(time_ratio(prec, fam, 1, v, 'endpoint'), 3)})")
+            L.append(f"| {PNAME[prec]} | {fam} | " + " | ".join(cells) + " |")
     L.append("")
     L.append("![error against time](error_vs_time.png)\n")
     L.append("x: ns per call (mean over the group's families and caps variants); y: worst "
@@ -241,8 +370,8 @@ def main():
         L.append(f"### {PNAME[prec]}\n")
         L.append("| family | caps | variant | cases | ref hits | misclassified (beyond band) | "
                  "worst margin | all / occluded beyond band | ulps median | p99 | max "
-                 "| cond max (n) | max rel | max n err | t_err fail | ns/call |")
-        L.append("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+                 "| cond max (n) | max rel | max n err | t_err fail | ns/call | insn/call |")
+        L.append("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
         for fam in R["families"]:
             for caps in (0, 1):
                 for r in sel(prec, None, [fam], caps):
@@ -255,27 +384,26 @@ def main():
                              f"{fmt(r['ulp_max'])} | {fmt(r['cond_ulp_max'])} ({r['cond_n']}) | "
                              f"{fmt(r['rel_max'])} | "
                              f"{fmt(r['nrm_max']) if 'NO_NORMAL' not in r['variant'] else '-'} | "
-                             f"{tf} | {fmt(r['ns'])} |")
+                             f"{tf} | {fmt(r['ns'])} | {fmt(r['insn'], 4)} |")
         L.append("")
-    with open(md_path, "w") as f:
+    with open(args.md, "w") as f:
         f.write("\n".join(L) + "\n")
 
-    # the headline and targets tables also go into docs/accuracy.md, between its markers
-    if len(sys.argv) > 4:
-        doc = sys.argv[4]
-        start = L.index("## Headline (all families, caps on and off)\n")
-        end = L.index("![error against time](error_vs_time.png)\n")
-        block = "\n".join(L[start + 1:end]).replace("## Targets of issue 3", "#### Targets")
-        block = (f"Seed {R['seed']}, {R['n']} cases per family x caps x precision, "
-                 f"{cpu_model()}, gcc {R.get('compiler', '?')} `{R.get('cflags', '?')}`, "
-                 f"{now}.\n\n" + block)
-        with open(doc) as f:
+    # the headline table and its column notes also go into docs/accuracy.md, between its
+    # markers (scripts/sync-readme.py copies them into the README)
+    if args.doc:
+        block = "\n".join(
+            [f"Seed {R['seed']}, {R['n']} cases per family x caps x precision, {now}; every "
+             f"figure from `make report` (all of them in bench/REPORT.md).", ""]
+            + hl_lines + [""] + hl_notes)
+        with open(args.doc) as f:
             text = f.read()
         b, e = "<!-- headline:begin -->", "<!-- headline:end -->"
-        if b in text and e in text:
-            text = text[:text.index(b) + len(b)] + "\n" + block + "\n" + text[text.index(e):]
-            with open(doc, "w") as f:
-                f.write(text)
+        if b not in text or e not in text:
+            sys.exit(f"report: markers {b} {e} not found in {args.doc}")
+        text = text[:text.index(b) + len(b)] + "\n" + block + "\n" + text[text.index(e):]
+        with open(args.doc, "w") as f:
+            f.write(text)
 
     # ---------------------------------------------------------------- plot
     import matplotlib
