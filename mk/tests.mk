@@ -1,22 +1,67 @@
-# The Unity contract suite of cylinder_isect.h (issue 2).
-#   tests/test_float.c, tests/test_double.c  the contract (tests/core_tests.inc, written once),
+# The Unity tests of cylinder_isect.h (tests/README.md lists what each file covers).
+# Run one test file in one configuration:
+#     make test-one T=tangent CFG=gcc-O0
+#   T: a topic of the contract tests, tests/contract/<T>.c (exact tangent errors t_range
+#      invariance reference: both precisions, two runners), or a runner tests/test_<T>.c (api,
+#      float, double); CFG: gcc-O0 gcc-O2 clang-O0 clang-O2 cxx asan (default gcc-O0).
+#
+# What make test runs from here:
+#   tests/test_float.c, tests/test_double.c  the contract: every tests/contract/<topic>.c, written
+#                                            once, in one runner per precision
 #   tests/test_api.c                         precision-independent API facts
-# become runners in every configuration of the root Makefile (gcc/clang -O0/-O2, g++ as C++11,
-# clang ASan+UBSan). This fragment adds the compile-configuration checks of tests/config:
+# in every configuration of the root Makefile (gcc/clang -O0/-O2, g++ as C++11, clang
+# ASan+UBSan), and the compile-configuration checks of tests/config:
 #   runners   CYL_NO_FLOAT, CYL_NO_DOUBLE, -DCYL_NO_PRECISE, user overrides (CYL_SQRTF/CYL_SQRT/
 #             CYL_FMAF/CYL_FMA/CYL_DEF and the tolerance macros), two translation units linked
 #             together (the last two also as C++11); the contract suite with CYL_FLOAT_WIDE=0,
 #             with CYL_NO_FAST_PATH, with a hardware FMA (-mfma, where this machine has one), and
 #             with every entry point forced inline (tests/config/cfg_forced_inline.h)
 #   prereq    -ffast-math must stop the build at the header's #error (gcc and clang)
-# Build one runner alone: make build/gcc-O0/test_float && build/gcc-O0/test_float
+# make check also builds and runs every topic alone (tests-topics: proves test-one's builds).
 
 TESTS_CFG_DIR := $(BUILD)/tests-config
 
-# test_float and test_double include core_tests.inc, which the root TEST_DEPS does not list.
-$(filter %/test_float %/test_double,$(TEST_BINS)): tests/core_tests.inc
+# ---------------------------------------------------------------- the contract tests
+CONTRACT_FILES  := $(wildcard tests/contract/*.c tests/contract/*.h)
+CONTRACT_TOPICS := $(patsubst tests/contract/%.c,%,$(wildcard tests/contract/*.c))
 
-TESTS_CFG_HDRS := cylinder_isect.h $(wildcard tests/config/*.h)
+# test_float and test_double include tests/contract/, which the root TEST_DEPS does not list;
+# nor does mk/cross.mk for its cross-compiled copies of the same runners.
+$(filter %/test_float %/test_double,$(TEST_BINS)): $(CONTRACT_FILES)
+ifneq ($(CROSS_DIR),)
+$(foreach a,$(CROSS_ARCHS),$(CROSS_DIR)/$(a)/test_float $(CROSS_DIR)/$(a)/test_double): $(CONTRACT_FILES)
+endif
+
+# One topic alone, in configuration $(1): BUILD/$(1)/contract/<topic>_float and _double.
+define TESTS_TOPIC_RULES
+$(BUILD)/$(1)/contract/%_float: tests/contract/%.c $(CONTRACT_FILES) cylinder_isect.h $(BUILD)/$(1)/unity.o
+	@mkdir -p $$(@D)
+	$$(CFG_CC_$(1)) $$(CFG_FLAGS_$(1)) $(UNITY_FLAGS) -I. $$< -x none $(BUILD)/$(1)/unity.o -lm -o $$@
+$(BUILD)/$(1)/contract/%_double: tests/contract/%.c $(CONTRACT_FILES) cylinder_isect.h $(BUILD)/$(1)/unity.o
+	@mkdir -p $$(@D)
+	$$(CFG_CC_$(1)) $$(CFG_FLAGS_$(1)) -DT_DOUBLE $(UNITY_FLAGS) -I. $$< -x none $(BUILD)/$(1)/unity.o -lm -o $$@
+endef
+$(foreach c,$(CONFIGS),$(eval $(call TESTS_TOPIC_RULES,$(c))))
+
+CFG ?= gcc-O0
+TEST_ONE_BINS := $(if $(filter $(CFG),$(CONFIGS)),$(strip \
+  $(if $(filter $(T),$(CONTRACT_TOPICS)),$(BUILD)/$(CFG)/contract/$(T)_float $(BUILD)/$(CFG)/contract/$(T)_double, \
+  $(if $(filter test_$(T),$(TEST_NAMES)),$(BUILD)/$(CFG)/test_$(T)))))
+
+.PHONY: test-one
+test-one: $(TEST_ONE_BINS)
+	@[ -n "$(TEST_ONE_BINS)" ] || { echo "usage: make test-one T=TOPIC CFG=CONFIGURATION; TOPIC: $(CONTRACT_TOPICS) $(patsubst test_%,%,$(TEST_NAMES)); CONFIGURATION: $(CONFIGS)" >&2; exit 2; }
+	@for r in $(TEST_ONE_BINS); do echo "=== $$r"; $$r || exit 1; done
+
+# Every topic alone in gcc-O0, both precisions (a step of make check).
+TESTS_TOPIC_BINS := $(foreach t,$(CONTRACT_TOPICS),$(BUILD)/gcc-O0/contract/$(t)_float $(BUILD)/gcc-O0/contract/$(t)_double)
+.PHONY: tests-topics
+tests-topics: unity $(TESTS_TOPIC_BINS)
+	@bash scripts/run-tests.sh $(RESULTS)/topics $(TESTS_TOPIC_BINS)
+CHECK_TARGETS += tests-topics
+
+# ---------------------------------------------------------------- compile configurations
+TESTS_CFG_HDRS := cylinder_isect.h $(wildcard tests/config/*.h) $(CONTRACT_FILES)
 
 # $(1) runner name, $(2) sources, $(3) extra flags, $(4) c or cxx
 define TESTS_CFG_RUNNER

@@ -1,30 +1,23 @@
-/* The contract tests (tests/core_tests.inc) instantiated for float: cylf_*. */
-#include <float.h>
-#include <math.h>
-
-#include "unity.h"
-#include "cylinder_isect.h"
-
-#define T float
-#define CYL(x) cylf_##x
-#define TOL_TANGENT CYL_TANGENT_TOLF
-#define TOL_PARALLEL CYL_PARALLEL_TOLF
-#define T_EPS FLT_EPSILON
-#define T_SQRT sqrtf
-#define T_FABS fabsf
-#define T_NEXT nextafterf
-#define T_LDEXP ldexpf
-#define T_BIG_EXP 50 /* lengths scaled by 2^+-50: squares stay finite only with prescaling */
-#define T_DIR_EXP 60 /* d and a scaled by 2^+-60 */
-#define T_MAX_EXP FLT_MAX_EXP
-#include "core_tests.inc"
-
-void setUp(void) {}
-void tearDown(void) {}
+/* The contract tests of cylinder_isect.h for float (cylf_*): every topic file of tests/contract/
+ * in one runner, which make test builds in each configuration. tests/test_double.c is the same
+ * runner for double. One topic alone: make test-one T=<topic> CFG=<configuration> (tests/README.md).
+ */
+#define CONTRACT_ALL
+#include "contract/exact.c"     /* exact cases */
+#include "contract/tangent.c"   /* tangent, rim and parallel */
+#include "contract/errors.c"    /* invalid input */
+#include "contract/t_range.c"   /* tmin / tmax */
+#include "contract/invariance.c" /* scaling, translation, options that only drop work */
+#include "contract/reference.c" /* against the long double reference */
 
 int main(void)
 {
     UNITY_BEGIN();
-    core_run_all();
+    run_exact();
+    run_tangent();
+    run_errors();
+    run_t_range();
+    run_invariance();
+    run_reference();
     return UNITY_END();
 }
