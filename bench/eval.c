@@ -81,7 +81,7 @@ static void ev_alt_out(int rc, double t, double scale, const double n[3], const 
     o->n[0] = n[0]; o->n[1] = n[1]; o->n[2] = n[2];
     o->flags = rc > 0 && n[0] * d[0] + n[1] * d[1] + n[2] * d[2] > 0 ? CYL_F_INSIDE : 0u;
 }
-#define EV_ALT_OUT(P, RC, H, SCALE, RAY)                                                     \
+#define EV_ALT_OUT(RC, H, SCALE, RAY)                                                        \
     do {                                                                                     \
         double n_[3], d_[3];                                                                 \
         int j_;                                                                              \
@@ -99,7 +99,7 @@ static void ev_alt_out(int rc, double t, double scale, const double n[3], const 
         memset(&h, 0, sizeof h);                                                             \
         rc = alt##P##_literal_solve(ray, (const alt##P##_literal_cyl *)in->lit + i,          \
                                     (CAPS) ? CYL_CAPS : 0u, &h);                             \
-        EV_ALT_OUT(P, rc, h, 1.0, ray);                                                      \
+        EV_ALT_OUT(rc, h, 1.0, ray);                                                      \
         return o->rc;                                                                        \
     }                                                                                        \
     EV_TIME_LOOP(ev_time_##P##_literal_##CAPS, cyl##P##_ray, rays, alt##P##_literal_cyl, lit, \
@@ -114,7 +114,7 @@ static void ev_alt_out(int rc, double t, double scale, const double n[3], const 
         memset(&h, 0, sizeof h);                                                             \
         rc = alt##P##_endpoint_solve((const cyl##P##_ray *)in->ep_rays + i,                  \
                                      (const alt##P##_endpoint_cyl *)in->ep + i, &h);         \
-        EV_ALT_OUT(P, rc, h, in->ep_scale[i], (const cyl##P##_ray *)in->rays + i);           \
+        EV_ALT_OUT(rc, h, in->ep_scale[i], (const cyl##P##_ray *)in->rays + i);           \
         return o->rc;                                                                        \
     }                                                                                        \
     EV_TIME_LOOP(ev_time_##P##_endpoint, cyl##P##_ray, ep_rays, alt##P##_endpoint_cyl, ep,     \
