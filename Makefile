@@ -125,7 +125,7 @@ GOALS          := $(or $(MAKECMDGOALS),$(.DEFAULT_GOAL))
 ifneq ($(filter check,$(GOALS)),)
 DEPS_TIER := check
 else ifneq ($(filter test deps $(foreach a,$(DEPS_AREAS_ALL),$(DEPS_GOALS_$(a))),$(GOALS)),)
-DEPS_TIER := $(or $(foreach a,$(DEPS_AREAS_ALL),$(if $(filter $(DEPS_GOALS_$(a)),$(GOALS)),$(a))),test)
+DEPS_TIER := $(or $(strip $(foreach a,$(DEPS_AREAS_ALL),$(if $(filter $(DEPS_GOALS_$(a)),$(GOALS)),$(a)))),test)
 endif
 ifneq ($(DEPS_TIER),)
 ifneq ($(CYL_DEPS_DONE),1)
