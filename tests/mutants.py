@@ -2,8 +2,8 @@
 """Mutation check of the contract suite: does every test that should fail, fail?
 
 Applies one deliberate bug at a time to a copy of cylinder_isect.h (in BUILD/mutants, never to
-the real file), builds tests/test_float.c, test_double.c and test_api.c against it and counts
-the failing tests. A mutant is "killed" when at least one runner reports a failure. Patterns
+the real file), builds tests/test_float.c, test_double.c (the contract tests of tests/contract/)
+and test_api.c against it and counts the failing tests. A mutant is "killed" when at least one runner reports a failure. Patterns
 are text of the header: when the header is rewritten a pattern may no longer match; that
 mutant is reported as "stale" (update it), not as a failure.
 
