@@ -8,9 +8,33 @@
 #include "reference.h"
 
 /* ================================================================== reference comparison */
+/* The fixed scenes must exercise what they claim: a precondition of the reference test (not a
+ * test of its own, since it does not depend on the library). */
+static void chk_scene_coverage(void)
+{
+    size_t i;
+    int seen_side = 0, seen_low = 0, seen_high = 0, seen_inside_first = 0, seen_miss = 0;
+    for (i = 0; i < N_SCENES; i++) {
+        Ray ray;
+        Cyl cyl;
+        RefHit rh[2];
+        int n, j;
+        scene_get(&scenes[i], &ray, &cyl);
+        n = ref_solve(&ray, &cyl, 1, rh);
+        if (n == 0) seen_miss++;
+        if (n == 1 && (rh[0].flags & CYL_F_INSIDE)) seen_inside_first++;
+        for (j = 0; j < n; j++) {
+            if (rh[j].part == CYL_SIDE) seen_side++;
+            if (rh[j].part == CYL_CAP_LOW) seen_low++;
+            if (rh[j].part == CYL_CAP_HIGH) seen_high++;
+        }
+    }
+    CHECK(seen_side && seen_low && seen_high && seen_inside_first && seen_miss,
+          "scene list covers side, both caps, inside origins and misses");
+}
+
 /* Every generic scene under every option set: count, parts, flags, t within t_err, useful
  * t_err, v, normals, against the long double reference. */
-static void chk_scene_coverage(void);
 static void test_scenes_against_reference(void)
 {
     size_t i, k;
@@ -167,31 +191,6 @@ static void test_random_scenes_against_reference(void)
     CHECK(checked >= 4 * skipped, m);
     CHECK(hits_seen >= checked, m);
     TEST_MESSAGE(m);
-}
-
-/* The fixed scenes must exercise what they claim: a precondition of the reference test (not a
- * test of its own, since it does not depend on the library). */
-static void chk_scene_coverage(void)
-{
-    size_t i;
-    int seen_side = 0, seen_low = 0, seen_high = 0, seen_inside_first = 0, seen_miss = 0;
-    for (i = 0; i < N_SCENES; i++) {
-        Ray ray;
-        Cyl cyl;
-        RefHit rh[2];
-        int n, j;
-        scene_get(&scenes[i], &ray, &cyl);
-        n = ref_solve(&ray, &cyl, 1, rh);
-        if (n == 0) seen_miss++;
-        if (n == 1 && (rh[0].flags & CYL_F_INSIDE)) seen_inside_first++;
-        for (j = 0; j < n; j++) {
-            if (rh[j].part == CYL_SIDE) seen_side++;
-            if (rh[j].part == CYL_CAP_LOW) seen_low++;
-            if (rh[j].part == CYL_CAP_HIGH) seen_high++;
-        }
-    }
-    CHECK(seen_side && seen_low && seen_high && seen_inside_first && seen_miss,
-          "scene list covers side, both caps, inside origins and misses");
 }
 
 /* CYL_PRECISE: the same classification as the default path on easy cases, and t as accurate. */
