@@ -5,7 +5,7 @@
 #   make embedded-check  Cortex-M4F / Cortex-M0 / RV32IMAFC builds, disassembly checks,
 #                        feature folding, and a smoke run of those objects under qemu
 #   make cxx-compat      the header as C++11 and C++17 (g++ and clang++, -Wall -Wextra -Werror)
-#   make misra-check     cppcheck with its MISRA C 2012 addon (deviations: embedded/misra.supp)
+#   make misra-check     cppcheck with its MISRA C 2012 addon (deviations: embedded/misra-deviations.txt)
 #   make tidy-check      clang-tidy (checks listed in embedded/tidy-checks.txt)
 #   make ci-cross        all of the above except sizes
 # All but sizes are steps of `make check`. The shell parts are scripts/cross.sh (targets,
