@@ -1,4 +1,4 @@
-/* cylinder_isect.h - v1.0.0 - ray/cylinder intersection in float and double, C99, one header.
+/* cylinder_isect.h - v1.1.0 - ray/cylinder intersection in float and double, C99, one header.
 
    Ray against a finite cylinder given by center c, axis a, radius r and height h: the open
    tube by default, the capped solid and the infinite tube as options; nearest hit, both
@@ -65,11 +65,14 @@
                      counts as a hit (both crossings, at or near the same t) unless
                      CYL_NO_TANGENT is given; there t is only determined to about √u (see
                      NUMERICAL NOTES) and t_err says so.
-     CYL_F_PARALLEL  sin(angle between d and a) <= CYL_PARALLEL_TOL: the direction is parallel
-                     to the axis within the rounding of its own components, so the wall crossing
-                     (t >= dist/(|d|·sin), beyond 1/u radii) is not determined by the data. The
-                     wall is then never hit; with CYL_CAPS a cap is hit where the ray point lies
-                     inside its disk. No inf, NaN or division by zero either way.
+     CYL_F_PARALLEL  sin(angle between d and a) <= CYL_PARALLEL_TOL, by default 0: d is
+                     exactly along the axis (a × d = 0, decided from exact products), so the
+                     wall is never crossed. The wall is then never hit; with CYL_CAPS a cap is
+                     hit where the ray point lies inside its disk. Any other direction, however
+                     close to the axis, gets the wall crossings its inputs determine (a ray
+                     from the wall can cross it again a few radii along; an origin off the wall
+                     gives t beyond 1/sin radii, a miss where not representable). A nonzero
+                     tolerance is the caller's policy. No inf, NaN or division by zero.
    A hit exactly on the rim (the circle where wall and cap meet) is reported as CYL_SIDE.
 
    Options (bits of opts)
@@ -169,16 +172,16 @@
                            VFP-D, RV64D, s390x, ppc64)  float (always so with CYL_NO_DOUBLE)
      CYL_TANGENT_TOLF      2^-16 = 2^-(24-8)            tangent band on e = 1 − ρ²/r²
      CYL_TANGENT_TOL       2^-45 = 2^-(53-8)
-     CYL_PARALLEL_TOLF     2^-24 = u (float)            parallel bound on sin(angle)
-     CYL_PARALLEL_TOL      2^-53 = u (double)
+     CYL_PARALLEL_TOLF     0 (exactly parallel only)    parallel bound on sin(angle): a
+     CYL_PARALLEL_TOL      0                            policy of the caller (e.g. 2^-24)
      CYL_HEADER_FILENAME   "cylinder_isect.h"           how this file includes itself
    Why these tolerances. Tangent: the default path computes e with an absolute error of a
    few u times (1 + |o − c|/r) (see the error analysis at the wall solver), so 256u =
    2^-(p−8) classifies every contact whose |e| exceeds it correctly for origins within tens
    of radii (everywhere on CYL_PRECISE), and it is the band inside which the tests accept
-   either answer. Parallel: below sin = u a
-   half-ulp change of one component of d makes it exactly parallel: the wall crossing is not
-   a function of the data any more.
+   either answer. Parallel: a × d is exact when a is axis-aligned and within a few ulps of
+   itself otherwise, so no angle above 0 leaves the crossing undetermined by the data (a ray
+   from the wall at sin = 1.5e-8 crosses it again 36 radii along: tests/contract/tangent.c).
 
    NUMERICAL NOTES
    ===============
@@ -266,7 +269,7 @@
 #define CYLINDER_ISECT_H
 
 #define CYL_VERSION_MAJOR 1
-#define CYL_VERSION_MINOR 0
+#define CYL_VERSION_MINOR 1
 #define CYL_VERSION_PATCH 0
 
 #if defined(__FAST_MATH__)
@@ -358,10 +361,10 @@
 #define CYL_TANGENT_TOL (1.0 / 35184372088832.0)              /* 2^-45 */
 #endif
 #ifndef CYL_PARALLEL_TOLF
-#define CYL_PARALLEL_TOLF (1.0f / 16777216.0f)                /* 2^-24 */
+#define CYL_PARALLEL_TOLF 0.0f                                /* exactly parallel only */
 #endif
 #ifndef CYL_PARALLEL_TOL
-#define CYL_PARALLEL_TOL (1.0 / 9007199254740992.0)           /* 2^-53 */
+#define CYL_PARALLEL_TOL 0.0
 #endif
 
 /* CYL_PRECISE's fast path: at most this many exact-quadratic steps with the plain √ from one
