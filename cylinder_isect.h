@@ -221,20 +221,17 @@
         |δm| <= 4u|a||w|, |δs| <= u|s| for float inputs (exact products), 2u|s| with Kahan's,
         else 3u|a||d|.
    Measured against the exact MPFR reference of ref/ on eleven case families, 6000 cases each
-   with and without caps (`make report`, seed 20261122, x86-64 with FMA; bench/REPORT.md has
-   every family; `make test` asserts the targets on a fixed-seed sample): t_err contained the
-   exact t in all 510,576 float and 523,679 double hits of every variant; default path: no
-   misclassification beyond the band in any family in either API (the target is the benign
-   ones), t within 0.5 ulps on the well-conditioned hits of the benign families in both;
-   CYL_PRECISE: none beyond the band in any family, 0.5 ulps. Time per call there (each
-   variant inlined with its options folded): float 63 ns (precise 63), double 89 ns (precise
-   126; at most 1.88x the default path in every family and caps setting, 1.44x on average),
-   against 51 / 36 ns for the end-point formulation and 60 / 60 ns for the literal one (a
-   shared machine: compare within one run, and expect the ratios to move between runs); those
-   two misclassify 18,787 / 14,644 and 19,839 / 10,278 cases beyond the band. Without t_err
-   and the normal the float path takes 44 ns, the double one 73 ns; `make insn` counts the
-   instructions per call, and `make ablation` shows what the double API's double-word
-   correction costs and buys.
+   with and without caps (`make report`, seed 20261122, x86-64, -O2 -march=x86-64-v3;
+   bench/REPORT.md has every family; `make test` asserts the targets on a fixed-seed sample):
+   t_err contained the exact t in all 516,407 float and 523,679 double hits of every variant;
+   default path: no misclassification beyond the band in any family in either API (the target
+   is the benign ones), t within 0.5 ulps on the well-conditioned hits of the benign families;
+   CYL_PRECISE: none beyond the band in any family, 0.5 ulps. Cost per capped call on the
+   well-conditioned family (instructions by callgrind, time the median of 5 runs): float 387
+   instructions, 57 ns (precise 387, 57 ns; without t_err and the normal 255, 37 ns), double
+   651, 84 ns (precise 1106, 118 ns; without t_err and the normal 556, 69 ns), against 119 and
+   118 instructions, 41 and 46 ns for the end-point (pa, pb, ra) formulation fed its own input
+   form, which misclassifies 19,020 float and 14,704 double cases beyond the band.
    Extreme ratios: when r is below 2^-31 (float computed in float) or 2^-435 (double, and so
    out of reach of float inputs computed in double) of |o − c|, r² underflows in the frame:
    the wall test then compares distances linearly, may misjudge rays within the rounding of
