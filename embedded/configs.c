@@ -1,7 +1,7 @@
 /* One configuration of cylinder_isect as a scene would use it: a single non-inline wrapper that
  * calls the API with constant options, so the compiler can fold away what the options leave
- * out. Built once per row of embedded/configs.txt by scripts/cross-sizes.sh (and by
- * scripts/cross-embedded.sh for the microcontroller checks), e.g.
+ * out. Built once per row of embedded/configs.txt by scripts/cross.sh sizes (and by
+ * scripts/cross.sh embedded for the microcontroller checks), e.g.
  *   cc -O2 -DCFG_NAME=cfgf_capped -DCFG_DOUBLE=0 -DCFG_ENTRY=CFG_INTERSECT -DCFG_OPTS=CYL_CAPS
  * Each configuration lives alone in its translation unit, so the size of the object's code is
  * the size of the routine for that configuration (static inline functions called once are

@@ -1,4 +1,4 @@
-// The header as C++: compiled by scripts/cross-cxx.sh with g++ and clang++ in C++11 and C++17,
+// The header as C++: compiled by make cxx-compat with g++ and clang++ in C++11 and C++17,
 // -Wall -Wextra -Werror and the project's strict set, in each precision configuration, then
 // run: every entry point once, with answers known in closed form. Exit status 0 = all passed.
 #include "cylinder_isect.h"

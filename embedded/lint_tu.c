@@ -1,4 +1,4 @@
-/* The translation unit that scripts/cross-lint.sh hands to cppcheck (MISRA C 2012 addon) and
+/* The translation unit that scripts/cross.sh lint hands to cppcheck (MISRA C 2012 addon) and
  * clang-tidy: the header with every entry point called, so that every function body is
  * analysed. The script runs it once per precision (-DCYL_NO_DOUBLE, then -DCYL_NO_FLOAT): the
  * two instances of the body share their line numbers, which one whole-program analysis would

@@ -8,7 +8,7 @@
  * Thumb-2 and VFPv4 single-precision instructions). On a board, replace sys_write and
  * sys_exit. The output ends with Unity's "N Tests M Failures 0 Ignored" line so that
  * scripts/run-tests.sh can count it with the rest.
- * Built by scripts/cross-embedded.sh; see docs/embedded.md. */
+ * Built by scripts/cross.sh embedded; see docs/embedded.md. */
 #include "cylinder_isect.h"
 
 /* The wrappers of embedded/configs.c, one per configuration (float). */

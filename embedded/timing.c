@@ -3,7 +3,7 @@
  * (every round times each of them once, in a rotated order) so that drift in the machine's load
  * hits all of them alike. Prints CSV: config,precision,ns_median,ns_q1,ns_q3,results,ratio,
  * where ratio = median / median of the "open" configuration of the same precision.
- * Built and run by scripts/cross-sizes.sh; the list of wrappers comes from cfg_list.h, which
+ * Built and run by scripts/cross.sh sizes; the list of wrappers comes from cfg_list.h, which
  * that script generates from embedded/configs.txt. Timing is reported, never asserted. */
 #define _POSIX_C_SOURCE 199309L
 #include "cylinder_isect.h"

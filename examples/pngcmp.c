@@ -1,4 +1,4 @@
-/* pngcmp: compares two PNG images pixel by pixel (used by scripts/ci-viewer.sh).
+/* pngcmp: compares two PNG images pixel by pixel (used by scripts/viewer-check.sh).
  *
  *   pngcmp a.png b.png [tolerance_levels [max_fraction]]
  *
