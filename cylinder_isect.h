@@ -18,14 +18,12 @@
        else if (rc < 0)
            printf("error: %s\n", cyl_strerror(rc));
 
-   Drop the file anywhere; there is no implementation macro: every function is `static inline`
-   (see CYL_DEF). The float API is cylf_*, the double API cyld_*; both come from one body below
-   that this file includes twice, so the debugger shows real line numbers. Link with -lm unless
-   the compiler inlines sqrt and fma (gcc/clang with -fno-math-errno and a target FMA, e.g.
-   -march=x86-64-v3, Cortex-M4F, RV32F).
+   No implementation macro: every function is `static inline` (CYL_DEF). cylf_* is the float
+   API, cyld_* the double one, both from one body this file includes twice. Link with -lm unless
+   sqrt and fma inline (-fno-math-errno and a target FMA: -march=x86-64-v3, Cortex-M4F, RV32F).
 
-   API CONTRACT
-   ============
+   CONTRACT
+   ========
    Geometry. The surface is the set of points at distance r from the axis line through c whose
    axial coordinate v = â·(x − c) lies in [−h/2, h/2]; â = a/|a|. The cap at c − â·h/2 is
    CYL_CAP_LOW, the one at c + â·h/2 is CYL_CAP_HIGH.
@@ -53,7 +51,7 @@
 
    The hit. t; t_err: the exact intersection of the given (already rounded) inputs with the
    reported part lies in [t − t_err, t + t_err] (a bound derived from a residual evaluated in
-   the same precision, see NUMERICAL NOTES); n: unit normal, facing the ray origin (n·d <= 0)
+   the same precision, N6 and N8); n: unit normal, facing the ray origin (n·d <= 0)
    by default, the geometric outward normal with CYL_OUTWARD; v: axial coordinate of the hit,
    within [−h/2, h/2] (exactly ±h/2 on a cap; on an infinite tube it saturates at the largest
    finite value where the true v is not representable); part: CYL_SIDE, CYL_CAP_LOW, CYL_CAP_HIGH;
@@ -63,8 +61,8 @@
      CYL_F_TANGENT   a grazing wall contact: e = 1 − ρ²/r² lies within ±CYL_TANGENT_TOL, where ρ
                      is the distance between the ray line and the axis line. Such a contact
                      counts as a hit (both crossings, at or near the same t) unless
-                     CYL_NO_TANGENT is given; there t is only determined to about √u (see
-                     NUMERICAL NOTES) and t_err says so.
+                     CYL_NO_TANGENT is given; there t is only determined to about √u (N11)
+                     and t_err says so.
      CYL_F_PARALLEL  sin(angle between d and a) <= CYL_PARALLEL_TOL, by default 0: d is
                      exactly along the axis (a × d = 0, decided from exact products), so the
                      wall is never crossed. The wall is then never hit; with CYL_CAPS a cap is
@@ -75,12 +73,19 @@
                      tolerance is the caller's policy. No inf, NaN or division by zero.
    A hit exactly on the rim (the circle where wall and cap meet) is reported as CYL_SIDE.
 
-   Options (bits of opts)
+   Errors, checked in this order; *hit is never touched on an error:
+     CYL_E_NULL (-1) a NULL pointer            CYL_E_RADIUS (-5) r <= 0, NaN or infinite
+     CYL_E_NONFINITE (-2) NaN/inf in o, d, c, a CYL_E_HEIGHT (-6) h <= 0 or NaN
+     CYL_E_ZERO_DIR (-3) d == 0                 CYL_E_TRANGE (-7) tmin > tmax, or a NaN
+     CYL_E_ZERO_AXIS (-4) a == 0                CYL_E_OPTION (-8) unknown or compiled-out bit
+
+   OPTIONS (bits of opts)
+   =======
      CYL_CAPS          solid capped cylinder instead of the open tube
      CYL_OUTWARD       outward normal instead of the ray-facing one
      CYL_NO_TANGENT    grazing contacts within the tangent tolerance are misses
      CYL_PRECISE       precise tier: classification right wherever its margin exceeds the
-                       tolerances, far origins included (see DEFAULT PATH AND PRECISE TIER)
+                       tolerances, far origins included (N9)
      CYL_NO_NORMAL     skip the normal: hit.n = {0, 0, 0}
      CYL_NO_ERRBOUND   skip the bound: hit.t_err = +INFINITY
      CYL_TRUSTED       skip input validation (NULL and option checks remain): the caller
@@ -92,64 +97,6 @@
    experiment of docs/examples.md). Then route the calls through one function of yours per
    option set, or define CYL_DEF as a forced inline.
 
-   Errors, checked in this order; *hit is never touched on an error:
-     CYL_E_NULL (-1) a NULL pointer            CYL_E_RADIUS (-5) r <= 0, NaN or infinite
-     CYL_E_NONFINITE (-2) NaN/inf in o, d, c, a CYL_E_HEIGHT (-6) h <= 0 or NaN
-     CYL_E_ZERO_DIR (-3) d == 0                 CYL_E_TRANGE (-7) tmin > tmax, or a NaN
-     CYL_E_ZERO_AXIS (-4) a == 0                CYL_E_OPTION (-8) unknown or compiled-out bit
-
-   DEFAULT PATH AND PRECISE TIER
-   =============================
-   Every call without CYL_PRECISE runs a fast path first: the plain formulas of NUMERICAL
-   NOTES 3-5 once, in double for the float API where double is hardware (CYL_FLOAT_WIDE),
-   else in the API's own type. Where it computes in double (the double API; the float API on
-   x86-64, AArch64 and the like) it is the lean path: one range check that also validates,
-   cross products from plain FMA products for float inputs (exact in double) and from Kahan's
-   for double ones, no live value it does not need, a normal from (a × x) × a, and the
-   residual bound of note 8, also in double. For the double API (and the float API computed in
-   float) the crossing is then corrected from double words: a wall root by the exact-quadratic
-   step of note 4, a cap crossing as in note 5; so t is about an ulp in both APIs. There, for
-   an origin on the surface within the roundings (a secondary ray), C = f(0) is formed from the
-   exact o − c first, so the crossing near t = 0 is decided from an accurate value; and in
-   every API it is wherever the rounding of C could move the root C/q across a rim (or, in the
-   double API, an end of the t range): that root moves by about u·r/sin of the angle to the
-   axis, and a flat disk (h far below r) multiplies that by r/h in units of its rim margin. Its
-   decisions (tangency, rim, tmin/tmax) carry the plain roundings: within a few ulps of a
-   threshold they can go either way, and farther for origins far from the axis (the rounding
-   of o − c is about u·|o − c|/r of e). t_err is rigorous on every path (note 8). Inputs
-   outside the range where nothing overflows or underflows are first scaled by powers of two.
-   The compensated solver of notes 1-7 answers alone for invalid input, degenerate cases, an
-   h/2 that rounds, and origins farther than 2^30 radii or half heights (2^12 when the fast
-   path computes in float), where the rounding of o − c alone would be 2^-23 (2^-12) of e or
-   of the rim margin. In the float API computed in double, whatever the lean path hands over
-   first goes to the fast path in double with CYL_PRECISE's certification (below), up to 2^40
-   radii and half heights, and what that cannot certify to the double API's solver, run on the
-   float inputs with the float tolerances: no decision of the float API is then taken in float
-   arithmetic (float's double words, about 2^-48, are what a flat disk defeats, see Extreme
-   ratios).
-   CYL_PRECISE starts on the fast path too, but certifies every decision: each is taken only
-   where the computed value is farther from its threshold than an a-priori bound on its error
-   (the parallel test, D against the tangent band, each root against the rims, each crossing
-   against tmin and tmax, and a start close enough for the final correction). Where one
-   correction step is not enough (the plain √(|a|²D) errs by about D's error, large near
-   tangency), one step takes √(G² − A·F) from its own residual instead, which errs by about the
-   error of f', and certifies itself by a bound computed after the fact; failing that, up to
-   six steps with the plain √, then the solver. Near the tangent band the plain D errs by
-   about the band's width, so A, B, C and D are formed again from double words: a crossing
-   that then shows clearly, or a contact certainly inside the band, is answered there (two
-   roots, corrected like any other; or none, D < 0, and both ends at the point of closest
-   approach −B/A, as the solver gives them). Anything closer, and every parallel contact, go
-   to the compensated solver, with every wall coefficient compensated and the rim decided
-   from the corrected roots (note 7). A crossing whose bound shows it within the t-range
-   band of tmin or tmax, 2^-(p−8)·max(|t|, r/|d|) (p = 24, 53), is kept or dropped as the plain
-   comparison says: either answer is right there, as for the tangent band. That decides the
-   t ≈ 0 crossing of a secondary ray (an origin on the surface, tmin = 0) without the solver
-   wherever its bound is that small. For the float API computed in double with a hardware FMA the
-   bound is global (and the lean path serves it): |o − c| below 2^28 r and 2^28 h/2 keeps
-   double's roundings under 2^-20 of every margin, inside float's band of 2^-16, except for
-   the rim of the root C/q, which the lean path tests (see above) and hands over where C's
-   rounding could decide it; farther origins go to the fast path's certification.
-
    CONFIGURATION (define before including)
    =============
      macro                 default                      effect
@@ -157,9 +104,8 @@
      CYL_NO_DOUBLE         undefined                    leave out cyld_*: no double anywhere
      CYL_NO_PRECISE        undefined                    compile out the precise tier
                                                         (CYL_PRECISE gives CYL_E_OPTION)
-     CYL_NO_FAST_PATH      undefined                    every call runs the compensated solver
-                                                        (the default path of v1.0): smaller
-                                                        code, slower calls
+     CYL_NO_FAST_PATH      undefined                    every call runs the compensated solver:
+                                                        smaller code, slower calls
      CYL_DEF               static inline                qualifier of every public function
      CYL_INTERNAL          static inline, forced inline qualifier of the internal functions
                            except under -Os
@@ -175,51 +121,9 @@
      CYL_PARALLEL_TOLF     0 (exactly parallel only)    parallel bound on sin(angle): a
      CYL_PARALLEL_TOL      0                            policy of the caller (e.g. 2^-24)
      CYL_HEADER_FILENAME   "cylinder_isect.h"           how this file includes itself
-   Why these tolerances. Tangent: the default path computes e with an absolute error of a
-   few u times (1 + |o − c|/r) (see the error analysis at the wall solver), so 256u =
-   2^-(p−8) classifies every contact whose |e| exceeds it correctly for origins within tens
-   of radii (everywhere on CYL_PRECISE), and it is the band inside which the tests accept
-   either answer. Parallel: a × d is exact when a is axis-aligned and within a few ulps of
-   itself otherwise, so no angle above 0 leaves the crossing undetermined by the data (a ray
-   from the wall at sin = 1.5e-8 crosses it again 36 radii along: tests/contract/tangent.c).
 
-   NUMERICAL NOTES
-   ===============
-   u = 2^-24 (float), 2^-53 (double). The method, with a source for each step:
-     1. Exact power-of-two prescaling (from the exponent bits, no libm) of a, d and the lengths
-        o − c, r when they are outside a safe range, so nothing overflows or underflows for
-        finite inputs whose answer is representable; arithmetic is equivariant under it, so a
-        scene scaled by 2^k gives the same bits (tests check 2^±50 float, 2^±400 double).
-     2. o − c exactly as a double word (Knuth's TwoSum); cross products s = a × d and
-        m = a × (o − c) as double words from FMA TwoProducts (never projections: no
-        cancellation for rays near the axis direction or origins far along it).
-     3. Geometric discriminant B² − AC = |a|²·D, D = r²|s|² − P², P = (o − c)·s (Ray Tracing
-        Gems, ch. 7; pbrt-v4 cylinders), with P compensated (Ogita, Rump, Oishi, "Accurate sum
-        and dot product", SIAM J. Sci. Comput. 26, 2005): no difference of large squares when
-        the origin is far.
-     4. Stable root pairing q = −(B + sgn(B)√Δ), t = q/A and C/q (Numerical Recipes §5.6),
-        then one exact-quadratic correction of the returned root, δ from f(t + δ) = 0 with
-        the residual f(t) = |m + t s|² − r²|a|² summed in compensated arithmetic.
-     5. Caps by clipping the wall interval with the slab between the cap planes (Cychosz and
-        Waggenspack, Graphics Gems IV): watertight at the rim. The plane crossings
-        (∓H|a| − a·w)/(a·d) use double-word a·d, a·w and |a|, since both cancel.
-     6. t_err: the residual f is evaluated at the returned t with a bound on its rounding
-        error (standard model, Higham, "Accuracy and Stability of Numerical Algorithms",
-        ch. 3), and the root nearest t of the exact quadratic f(t + δ) = f + f'δ + Aδ² is
-        bounded by min(2F/|f'|, √(F/A)), F = |f| + its error bound. Near tangency this is the
-        inherent √ term. Caps: the same with the plane's linear residual.
-     7. CYL_PRECISE: B, C and D compensated too; both roots corrected before the rim is
-        decided from the sign of a compensated a·x(t) ± H|a|.
-     8. The fast path's t_err: componentwise bounds on the errors of s = a × d and m = a × w
-        (the latter including the rounding of o − c) give one on y = m + t·s, hence F >= |f(t)|
-        and G <= |f'(t)|/2 (standard model: each operation errs by at most u, an FMA once, so
-        the bounds hold with or without contraction); the nearest root of the exact quadratic
-        is within F/G where G² > A·F (f' keeps its sign there: the same crossing), else
-        √(F/A). A cap: the plane's residual a·x(t) ∓ H|a| over a·d. For the float API computed
-        in double, the rounding of t to float is added and the sum rounded up. The lean path
-        uses the same argument with norm-wise terms (1-norms for the 2-norms, no square root):
-        |δm| <= 4u|a||w|, |δs| <= u|s| for float inputs (exact products), 2u|s| with Kahan's,
-        else 3u|a||d|.
+   ACCURACY
+   ========
    Measured against the exact MPFR reference of ref/ on eleven case families, 6000 cases each
    with and without caps (`make report`, seed 20261122, x86-64, -O2 -march=x86-64-v3;
    bench/REPORT.md has every family; `make test` asserts the targets on a fixed-seed sample):
@@ -231,33 +135,16 @@
    instructions, 57 ns (precise 387, 57 ns; without t_err and the normal 255, 37 ns), double
    651, 84 ns (precise 1106, 118 ns; without t_err and the normal 556, 69 ns), against 119 and
    118 instructions, 41 and 46 ns for the end-point (pa, pb, ra) formulation fed its own input
-   form, which misclassifies 19,020 float and 14,704 double cases beyond the band.
-   Extreme ratios: when r is below 2^-31 (float computed in float) or 2^-435 (double, and so
-   out of reach of float inputs computed in double) of |o − c|, r² underflows in the frame:
-   the wall test then compares distances linearly, may misjudge rays within the rounding of
-   o − c of the axis, and reports t_err = +inf; when h/2 exceeds |o − c| and r by
-   more than 2^123 (float) or 2^1019 (double), the cap planes are computed at a coarser scale
-   of their own and cap hits carry t_err = +inf. Flat disks: for an origin on the wall and a
-   ray nearly parallel to the axis, the crossing near t = 0 is decided against the rim with
-   an error of about X = r/(h·sin) times the solver's double words, 2^-106·X in the double
-   API and the float API computed in double, 2^-46·X in float-only builds (CYL_FLOAT_WIDE =
-   0), relative to the rim margin, times up to about 2^10: past X of about 2^50 (double),
-   2^80 (float computed in double) or 2^20 (float only) the rim can go either way on every
-   path, CYL_PRECISE included. The bench's flat family (X up to 2^83 in double, 2^54 in
-   float) finds them only in a float-only build.
-   Conditioning: near tangency a relative input change ε moves t by about √ε·r/(|d|·sin);
-   on the default path the rounding of D (about u·|o − c|/r relative to e) decides hit or
-   miss for origins beyond about 1/(256u) radii; CYL_PRECISE removes that term.
+   form, which misclassifies 19,020 float and 14,704 double cases beyond the band. How each
+   path gets there: N9; where the guarantees weaken (extreme ratios, flat disks): N11.
 
    WHAT IT DOES NOT DO
    ===================
-   No ray packets or SIMD batches, no BVH, no elliptic or oblique cylinders, no cones, no
-   texture coordinates beyond v. It does not nudge spawned rays: use tmin or the t_err of the
-   previous hit for that. Results assume IEEE-754 arithmetic with FLT_EVAL_METHOD == 0 (true on
-   x86-64 SSE, ARM, RISC-V) and no -ffast-math: the file refuses to build otherwise. Its
-   error-free transformations need products kept apart from the sums that follow them: gcc's
-   default contraction outside the ISO modes (-std=gnu*, C++) is turned off for this file's
-   code by a pragma, but clang's -ffp-contract=fast ignores pragmas: do not build with it.
+   No ray packets or SIMD, no BVH, no oblique cylinders or cones, no texture coordinates beyond
+   v, no nudging of spawned rays (use tmin or the previous hit's t_err). Needs IEEE-754 with
+   FLT_EVAL_METHOD == 0 and no -ffast-math (both refused by #error). gcc's contraction outside
+   the ISO modes is turned off for this file by a pragma; clang's -ffp-contract=fast ignores
+   pragmas: do not build with it.
 
    LICENSE: MIT. Copyright (c) 2026 the cylinder_isect developers.
 */
@@ -535,7 +422,7 @@ CYL_DEF const char *cyl_strerror(int code)
    modes (-std=gnu*, its default, and C++) fuses x*y + z across statements into an FMA where
    the target has one, and a TwoSum of a rounded product then loses its exact error term: the
    double words of the solver and of the corrections came out wrong by far more than their
-   bounds (fuzz finding 33). ISO C modes (-std=c99, c11, ...) do not contract; clang contracts
+   bounds. ISO C modes (-std=c99, c11, ...) do not contract; clang contracts
    only inside one expression, which every error-free transformation here keeps apart, except
    under -ffp-contract=fast, which ignores this and every other pragma: do not use it. Only
    where gcc would contract (a GNU mode or C++, and a hardware FMA): the pragma also changes
@@ -976,7 +863,7 @@ CYL__INL void CYL__P(prepare)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
    and *tangent set. */
 /* The solver's C = |m|² − r²|a|² as one compensated sum of the double words m + ml and
    R2 + R2l = r²|a|², in both tiers (the default mode needs it for an origin on the surface
-   within the roundings: see fc0, fuzz finding 31). Inline: called out of line it made the
+   within the roundings: see fc0). Inline: called out of line it made the
    precise tier's hand-overs about twice as slow in time (not in instructions). */
 CYL__INL CYL__R CYL__P(wallc)(const CYL__P(frame) *f, CYL__R R2, CYL__R R2l)
 {
@@ -1019,7 +906,7 @@ CYL__INL int CYL__P(wall)(CYL__P(frame) *f, unsigned opts, CYL__R t[2],
         /* m as a double word from the exact w + wl, P compensated, r²|a|² as a double word:
            what the root correction in finish needs for a residual exact to O(u²); C from them
            compensated (wallc), so that an origin on the surface within the roundings gets its
-           crossing near t = 0 right (fuzz finding 31; the solver is the rare path, and one
+           crossing near t = 0 right (the solver is the rare path, and one
            compensated sum is less code than a test for when it is needed) */
         CYL__R r2l = CYL__FMAR(f->r, f->r, -r2);
         /* the same m on every entry point, so that occluded and intersect classify alike */
@@ -1193,7 +1080,7 @@ CYL__INL CYL__R CYL__P(fres)(const CYL__R a[3], const CYL__R d[3], const CYL__R 
    wall interval: otherwise the wall interval decides.) |a × x|² <= r²|a|², from the exact
    o − c and the crossing point in double words (fres): formed plainly, x = (o − c) + t·d
    rounds by about u·|o − c|, which for a far origin is far more than the disk's margin (the
-   double API's search, session 5: a parallel ray from 2^40 radii got a cap 2.7e-6 outside
+   double API's search: a parallel ray from 2^40 radii got a cap 2.7e-6 outside
    its disk). */
 CYL__INL int CYL__P(in_disk)(const CYL__P(frame) *f, CYL__R t)
 {
@@ -1323,7 +1210,7 @@ CYL__INL int CYL__P(solve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
 
 /* ------------------------------------------------------------------ the output */
 
-/* Rigorous bound on |t − exact crossing| in the frame (see NUMERICAL NOTES 6).
+/* Rigorous bound on |t − exact crossing| in the frame (N6).
    Wall: ŷ = m̂ + t ŝ (fma), with |ŷ_j − y_j| <= Ey_j from the 2u of each cross-product
    component, the error of w propagated through a×, and the fma's own rounding; then
    F >= |f(t)| and a lower bound of |f'(t)| = 2|s·y| give the nearest root of the exact
@@ -1589,8 +1476,7 @@ CYL__INL CYL__R CYL__P(fcapt)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
     t = CYL__P(div_dw)(num.hi, num.lo, ad, adl);
     /* a·d far below its plain rounding (a ray parallel to the cap planes within 2^-p of |a||d|)
        can come out 0 here and leave no quotient: keep the plain crossing tp then, which the
-       caller decided with, and whose bound (cbound) says how little is known of it (fuzz
-       finding 36) */
+       caller decided with, and whose bound (cbound) says how little is known of it */
     return CYL__P(abs)(t) <= CYL__MAXR ? t : tp;
 }
 
@@ -1636,7 +1522,7 @@ CYL__INL CYL__R CYL__P(fres)(const CYL__R a[3], const CYL__R d[3], const CYL__R 
 /* C = f(0) = |a × (o − c)|² − r²|a|² from the exact o − c (fres at t = 0): about u of itself
    plus u² of its terms. The plain C rounds by about u·|m|², which for an origin on the surface
    (a secondary ray) is all of it; the crossing near t = 0 then moves by about u·r²|a|²/|q|,
-   and along a ray nearly parallel to the axis that is far past a rim (fuzz finding 31). */
+   and along a ray nearly parallel to the axis that is far past a rim. */
 CYL__INL CYL__R CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                            const CYL__R a[3], const CYL__R d[3], const CYL__R s[3], CYL__R r,
                            const CYL__R lf[2])
@@ -1778,7 +1664,7 @@ CYL__INL int CYL__P(frefr)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
 }
 
 /* A corrected crossing t (frame) kept in [tmin, tmax], in the caller's units (tmin/tsc can be
-   subnormal in the frame, fuzz finding 27): sets t and tu = t·tsc, returns what the frame's t
+   subnormal in the frame): sets t and tu = t·tsc, returns what the frame's t
    differs from tu (|t·tsc − tu|, added to the bound). */
 CYL__INL CYL__R CYL__P(fclamp)(const CYL__N(ray) *ray, CYL__R tsc, CYL__R *t, CYL__R *tu)
 {
@@ -1824,7 +1710,7 @@ CYL__SLOW CYL__L CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 /* Could the rounding of C (|δC| <= eC) move the root t = C/q (frame) across a rim (v|a| =
    a·w + t·a·d, computed: v, against ±H|a|), or with ends = 1 across tmin or tmax (t·tsc)? It
    moves it by up to eC/|q|, which for an origin near the wall grows like 1/sin of the angle to the axis: a
-   ray nearly parallel to it (fuzz findings 31, 32). At a rim that error is also multiplied by
+   ray nearly parallel to it. At a rim that error is also multiplied by
    r/h, so even C's rounding in double can decide a float rim there. Compared without a
    division, with a factor 4 for the roundings of the test; infinite ends never qualify. */
 CYL__INL int CYL__P(cnear)(CYL__L t, CYL__L v, CYL__L q, CYL__L eC, CYL__L ad, CYL__L Hn,
@@ -1853,7 +1739,7 @@ CYL__INL void CYL__P(ferr)(const CYL__L a[3], const CYL__L d[3], const CYL__L s[
     *em = 6 * u * *ma * mw * (1 + 4 * u);
 }
 
-/* A wall crossing's bound (NUMERICAL NOTES 8), in the frame: y = m + t·s as computed, Y = y·y,
+/* A wall crossing's bound (N8), in the frame: y = m + t·s as computed, Y = y·y,
    Gs = y·s, at = |t|; es and em bound the errors of s and m componentwise, ms = max |s_i|.
    Bounds on the rounding of y give F >= |f(t)| and G <= |f'(t)|/2; the nearest root of the
    exact quadratic is within F/G where G² > A·F, else within √(F/A). */
@@ -1891,8 +1777,7 @@ CYL__INL CYL__L CYL__P(cbound)(CYL__L t, CYL__L ad, CYL__L aw, CYL__L sHn, CYL__
 
 /* The bound et (in the caller's units, about t's value tu in the wider type) of the returned
    tr: plus the rounding of tu to the API's type, then in the API's type rounded up: where the
-   conversion rounded down (the wider type's bound, or a subnormal one), one ulp more (fuzz
-   findings 23, 24). */
+   conversion rounded down (the wider type's bound, or a subnormal one), one ulp more. */
 CYL__INL CYL__R CYL__P(errup)(CYL__L et, CYL__L tu, CYL__R tr)
 {
     CYL__R te;
@@ -1912,7 +1797,7 @@ CYL__INL CYL__R CYL__P(errup)(CYL__L et, CYL__L tu, CYL__R tr)
 }
 
 /* Two crossings whose corrections crossed over are kept ordered, the bound widened to match,
-   rounded up: the difference and the sum round once each (fuzz finding 30). */
+   rounded up: the difference and the sum round once each. */
 CYL__INL void CYL__P(order2)(CYL__N(hit) hits[2])
 {
     if (hits[1].t < hits[0].t) {
@@ -2094,8 +1979,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         /* The range check is the validation too: NaN, infinities, zero vectors and r, h <= 0
            fail it. Inside it no quantity below overflows, and none that decides or bounds
            anything underflows: they are products of |a|², |d|² and |m|² + r²|a|² (r²|s|² <=
-           r²|a|²·|d|², so |a|² and |d|² are bounded each, not only their product: fuzz
-           finding 29). */
+           r²|a|²·|d|², so |a|² and |d|² are bounded each, not only their product) */
         if (aa >= 1 / CYL__LDIR && aa <= CYL__LDIR && dd >= 1 / CYL__LDIR && dd <= CYL__LDIR &&
             MM + R2 <= hi && R2 >= lo && r > 0 && cyl->h > 0 && ray->tmin <= ray->tmax)
             break;
@@ -2171,7 +2055,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
             /* certified: beside (above), or clearly crossed. Near the tangent band (either side
                of it) the plain D errs by about the band's width: A, B and D again from double
                words (fcomp; C from the exact o − c, fc0, below), and a contact certainly inside
-               the band is answered here too (DEFAULT PATH AND PRECISE TIER); what fcomp cannot
+               the band is answered here too (N9); what fcomp cannot
                decide goes to the solver. */
             if (!(D > band + eD)) {
 #if !CYL__WIDE
@@ -2365,8 +2249,8 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         int kept = 0, sel[2] = {0, 0};
         for (k = 0; ce && k < 2; k++) {
             /* CYL_PRECISE: a crossing too close to tmin or tmax to tell goes to the solver, for
-               every entry point alike (fuzz finding 28), unless it is inside the t-range band,
-               where either answer is right (DEFAULT PATH AND PRECISE TIER): [tu − eu, tu + eu]
+               every entry point alike, unless it is inside the t-range band,
+               where either answer is right (N9): [tu − eu, tu + eu]
                holds an end and the exact t, so they are within 2·eu, and max(|tu| − eu, r/|d|)
                is at most the band's scale max(|t|, r/|d|) (1 + 1/64 covers the roundings of
                r/|d| and of this test). Secondary rays (an origin on the surface, tmin = 0) are
@@ -2449,7 +2333,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                             nl[2] = z0 ? -a[1] : -a[0];
                             len2 = CYL__P(ldot)(nl, nl);
                         } else if (!(len2 <= CYL__LMAX)) {
-                            /* a crossing so far out that |y × a|² overflows (fuzz finding 37):
+                            /* a crossing so far out that |y × a|² overflows:
                                scaled by its largest component */
                             CYL__L sk = 1 / CYL__P(lmax3)(nl);
                             nl[0] *= sk;
@@ -2493,7 +2377,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                     continue;
                 }
                 {
-                    /* t's bound, from the residual at t (see NUMERICAL NOTES 8): bounds on the
+                    /* t's bound, from the residual at t (N8): bounds on the
                        errors of s and m (with the rounding of o − c) give one on y = m + t·s,
                        hence on f(t) = |y|² − r²|a|² and on f'(t)/2 = y·s; the nearest root of
                        the exact quadratic is within min(F/G, √(F/A)). A cap: the plane's
@@ -2531,7 +2415,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
 #define CYL__QX(p, q, r, s) CYL__P(ldop)(p, q, r, s)
 #endif
 
-/* The lean path's wall bound: note 8's residual bound with norm-wise error terms, from what
+/* The lean path's wall bound: N8's residual bound with norm-wise error terms, from what
    the lean path has at hand (no componentwise maxima, no square root: 1-norms bound the
    2-norms): em >= |δm| (with the rounding of o − c), es >= |δs|, s1 >= |s|; y at t with
    Y = ŷ·ŷ and Gs = ŷ·ŝ, at = |t|. E bounds |ŷ − y| (the roundings of m, s and of
@@ -2612,7 +2496,7 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
             yn[2] = y[2];
             if (!(Ya <= CYL__LMAX)) {
                 /* a crossing so far out that |y|²|a|² overflows (the far root of a contact in
-                   the tangent band, fuzz finding 37): y scaled by its largest component */
+                   the tangent band): y scaled by its largest component */
                 CYL__L k = 1 / CYL__P(lmax3)(y);
                 yn[0] = y[0] * k;
                 yn[1] = y[1] * k;
@@ -2681,8 +2565,7 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
                           int want, CYL__N(hit) *hits)
 {
     /* |o − c| <= 2^30 r and 2^30 h/2, as the fast path; CYL_PRECISE (here only for the float
-       API computed in double with an FMA) keeps a headroom of 2^28 (DEFAULT PATH AND PRECISE
-       TIER) */
+       API computed in double with an FMA) keeps a headroom of 2^28 (N9) */
     const CYL__L far2 = (opts & CYL_PRECISE) ? (CYL__L)72057594037927936.0 /* 2^56 */
                                              : (CYL__L)1152921504606846976.0; /* 2^60 */
     const CYL__L hi = CYL__LHI;
@@ -2860,7 +2743,7 @@ CYL__INL int CYL__P(quickok)(unsigned opts)
    tolerance, on the float inputs (exact in double), and its hits are rounded to float (t_err
    rounded up; a t beyond float's range is a miss, a v beyond it saturates). Float's own
    solver would decide with double words of float (about 2^-48), which a ray nearly parallel
-   to the axis of a flat disk amplifies by r/(h·sin) past any rim margin (fuzz finding 32). */
+   to the axis of a flat disk amplifies by r/(h·sin) past any rim margin. */
 CYL__SLOW int CYL__P(wsolve)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                              unsigned opts, int want, CYL__N(hit) *hits)
 {
@@ -3064,3 +2947,117 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #endif
 #undef CYL__NOCONTRACT
 #endif /* CYL__BODY */
+
+/* NOTES (cited from the code as N1 .. N11)
+   ==========================================
+   u = 2^-24 (float), 2^-53 (double). The method, with a source for each step:
+   N1. Exact power-of-two prescaling (from the exponent bits, no libm) of a, d and the lengths
+        o − c, r when they are outside a safe range, so nothing overflows or underflows for
+        finite inputs whose answer is representable; arithmetic is equivariant under it, so a
+        scene scaled by 2^k gives the same bits (tests check 2^±50 float, 2^±400 double).
+   N2. o − c exactly as a double word (Knuth's TwoSum); cross products s = a × d and
+        m = a × (o − c) as double words from FMA TwoProducts (never projections: no
+        cancellation for rays near the axis direction or origins far along it).
+   N3. Geometric discriminant B² − AC = |a|²·D, D = r²|s|² − P², P = (o − c)·s (Ray Tracing
+        Gems, ch. 7; pbrt-v4 cylinders), with P compensated (Ogita, Rump, Oishi, "Accurate sum
+        and dot product", SIAM J. Sci. Comput. 26, 2005): no difference of large squares when
+        the origin is far.
+   N4. Stable root pairing q = −(B + sgn(B)√Δ), t = q/A and C/q (Numerical Recipes §5.6),
+        then one exact-quadratic correction of the returned root, δ from f(t + δ) = 0 with
+        the residual f(t) = |m + t s|² − r²|a|² summed in compensated arithmetic.
+   N5. Caps by clipping the wall interval with the slab between the cap planes (Cychosz and
+        Waggenspack, Graphics Gems IV): watertight at the rim. The plane crossings
+        (∓H|a| − a·w)/(a·d) use double-word a·d, a·w and |a|, since both cancel.
+   N6. t_err: the residual f is evaluated at the returned t with a bound on its rounding
+        error (standard model, Higham, "Accuracy and Stability of Numerical Algorithms",
+        ch. 3), and the root nearest t of the exact quadratic f(t + δ) = f + f'δ + Aδ² is
+        bounded by min(2F/|f'|, √(F/A)), F = |f| + its error bound. Near tangency this is the
+        inherent √ term. Caps: the same with the plane's linear residual.
+   N7. CYL_PRECISE: B, C and D compensated too; both roots corrected before the rim is
+        decided from the sign of a compensated a·x(t) ± H|a|.
+   N8. The fast path's t_err: componentwise bounds on the errors of s = a × d and m = a × w
+        (the latter including the rounding of o − c) give one on y = m + t·s, hence F >= |f(t)|
+        and G <= |f'(t)|/2 (standard model: each operation errs by at most u, an FMA once, so
+        the bounds hold with or without contraction); the nearest root of the exact quadratic
+        is within F/G where G² > A·F (f' keeps its sign there: the same crossing), else
+        √(F/A). A cap: the plane's residual a·x(t) ∓ H|a| over a·d. For the float API computed
+        in double, the rounding of t to float is added and the sum rounded up. The lean path
+        uses the same argument with norm-wise terms (1-norms for the 2-norms, no square root):
+        |δm| <= 4u|a||w|, |δs| <= u|s| for float inputs (exact products), 2u|s| with Kahan's,
+        else 3u|a||d|.
+   N9. The default path and the precise tier.
+   Every call without CYL_PRECISE runs a fast path first: the plain formulas of N3-N5 once, in double for the float API where double is hardware (CYL_FLOAT_WIDE),
+   else in the API's own type. Where it computes in double (the double API; the float API on
+   x86-64, AArch64 and the like) it is the lean path: one range check that also validates,
+   cross products from plain FMA products for float inputs (exact in double) and from Kahan's
+   for double ones, no live value it does not need, a normal from (a × x) × a, and the
+   residual bound of N8, also in double. For the double API (and the float API computed in
+   float) the crossing is then corrected from double words: a wall root by the exact-quadratic
+   step of N4, a cap crossing as in N5; so t is about an ulp in both APIs. There, for
+   an origin on the surface within the roundings (a secondary ray), C = f(0) is formed from the
+   exact o − c first, so the crossing near t = 0 is decided from an accurate value; and in
+   every API it is wherever the rounding of C could move the root C/q across a rim (or, in the
+   double API, an end of the t range): that root moves by about u·r/sin of the angle to the
+   axis, and a flat disk (h far below r) multiplies that by r/h in units of its rim margin. Its
+   decisions (tangency, rim, tmin/tmax) carry the plain roundings: within a few ulps of a
+   threshold they can go either way, and farther for origins far from the axis (the rounding
+   of o − c is about u·|o − c|/r of e). t_err is rigorous on every path (N8). Inputs
+   outside the range where nothing overflows or underflows are first scaled by powers of two.
+   The compensated solver of N1-N7 answers alone for invalid input, degenerate cases, an
+   h/2 that rounds, and origins farther than 2^30 radii or half heights (2^12 when the fast
+   path computes in float), where the rounding of o − c alone would be 2^-23 (2^-12) of e or
+   of the rim margin. In the float API computed in double, whatever the lean path hands over
+   first goes to the fast path in double with CYL_PRECISE's certification (below), up to 2^40
+   radii and half heights, and what that cannot certify to the double API's solver, run on the
+   float inputs with the float tolerances: no decision of the float API is then taken in float
+   arithmetic (float's double words, about 2^-48, are what a flat disk defeats, see Extreme
+   ratios).
+   CYL_PRECISE starts on the fast path too, but certifies every decision: each is taken only
+   where the computed value is farther from its threshold than an a-priori bound on its error
+   (the parallel test, D against the tangent band, each root against the rims, each crossing
+   against tmin and tmax, and a start close enough for the final correction). Where one
+   correction step is not enough (the plain √(|a|²D) errs by about D's error, large near
+   tangency), one step takes √(G² − A·F) from its own residual instead, which errs by about the
+   error of f', and certifies itself by a bound computed after the fact; failing that, up to
+   six steps with the plain √, then the solver. Near the tangent band the plain D errs by
+   about the band's width, so A, B, C and D are formed again from double words: a crossing
+   that then shows clearly, or a contact certainly inside the band, is answered there (two
+   roots, corrected like any other; or none, D < 0, and both ends at the point of closest
+   approach −B/A, as the solver gives them). Anything closer, and every parallel contact, go
+   to the compensated solver, with every wall coefficient compensated and the rim decided
+   from the corrected roots (N7). A crossing whose bound shows it within the t-range
+   band of tmin or tmax, 2^-(p−8)·max(|t|, r/|d|) (p = 24, 53), is kept or dropped as the plain
+   comparison says: either answer is right there, as for the tangent band. That decides the
+   t ≈ 0 crossing of a secondary ray (an origin on the surface, tmin = 0) without the solver
+   wherever its bound is that small. For the float API computed in double with a hardware FMA the
+   bound is global (and the lean path serves it): |o − c| below 2^28 r and 2^28 h/2 keeps
+   double's roundings under 2^-20 of every margin, inside float's band of 2^-16, except for
+   the rim of the root C/q, which the lean path tests (see above) and hands over where C's
+   rounding could decide it; farther origins go to the fast path's certification.
+
+   N10. Why these tolerances. Tangent: the default path computes e with an absolute error of a
+   few u times (1 + |o − c|/r) (see the error analysis at the wall solver), so 256u =
+   2^-(p−8) classifies every contact whose |e| exceeds it correctly for origins within tens
+   of radii (everywhere on CYL_PRECISE), and it is the band inside which the tests accept
+   either answer. Parallel: a × d is exact when a is axis-aligned and within a few ulps of
+   itself otherwise, so no angle above 0 leaves the crossing undetermined by the data (a ray
+   from the wall at sin = 1.5e-8 crosses it again 36 radii along: tests/contract/tangent.c).
+
+   N11. Extreme ratios: when r is below 2^-31 (float computed in float) or 2^-435 (double, and so
+   out of reach of float inputs computed in double) of |o − c|, r² underflows in the frame:
+   the wall test then compares distances linearly, may misjudge rays within the rounding of
+   o − c of the axis, and reports t_err = +inf; when h/2 exceeds |o − c| and r by
+   more than 2^123 (float) or 2^1019 (double), the cap planes are computed at a coarser scale
+   of their own and cap hits carry t_err = +inf. Flat disks: for an origin on the wall and a
+   ray nearly parallel to the axis, the crossing near t = 0 is decided against the rim with
+   an error of about X = r/(h·sin) times the solver's double words, 2^-106·X in the double
+   API and the float API computed in double, 2^-46·X in float-only builds (CYL_FLOAT_WIDE =
+   0), relative to the rim margin, times up to about 2^10: past X of about 2^50 (double),
+   2^80 (float computed in double) or 2^20 (float only) the rim can go either way on every
+   path, CYL_PRECISE included. The bench's flat family (X up to 2^83 in double, 2^54 in
+   float) finds them only in a float-only build.
+   Conditioning: near tangency a relative input change ε moves t by about √ε·r/(|d|·sin);
+   on the default path the rounding of D (about u·|o − c|/r relative to e) decides hit or
+   miss for origins beyond about 1/(256u) radii; CYL_PRECISE removes that term.
+
+*/
