@@ -1136,6 +1136,11 @@ CYL__INL int CYL__P(solvet)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     f->R2l = f->sq = 0;
     for (k = 0; k < 3; k++) f->m[k] = f->ml[k] = 0; /* set by the wall; zero for -O3's sake */
     if (!CYL__P(slab)(f, sl, sp)) return 0;
+#ifndef CYL_NO_PRECISE
+    /* within sin = u of the axis the plain roots err by about u/sin of the half height at the
+       rim: the precise mode's corrected roots decide it */
+    if (f->A <= CYL__U * CYL__U * f->aa * CYL__P(dot)(f->d, f->d)) f->precise = 1;
+#endif
     /* sin²(angle) = A / (|a|²|d|²) */
     if (f->A <= f->para * f->para * f->aa * CYL__P(dot)(f->d, f->d)) {
         if (caps && f->H <= CYL__MAXR) {
@@ -1305,7 +1310,13 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, un
            y × a normalised. */
         for (i = 0; i < 3; i++) y[i] = CYL__FMAR(c->t, f->s[i], f->m[i]) + (f->ml[i] + c->t * f->sl[i]);
         ys = CYL__P(dot)(y, f->s);
-        v = CYL__FMAR(c->t, f->ad, f->aw) / f->na;
+        {
+            /* a·x(t) = a·w + t·a·d from double words: the two cancel for an origin far along
+               the axis and a crossing near the middle (rays close to the axis direction) */
+            CYL__R p = c->t * f->ad, z, ze;
+            CYL__P(two_sum)(f->aw, p, &z, &ze);
+            v = (z + (ze + CYL__FMAR(c->t, f->ad, -p) + f->awl + c->t * f->adl)) / f->na;
+        }
         if (!(opts & CYL_NO_NORMAL)) {
             /* y ⊥ a, so |y × a| = |y||a| has no cancellation: one FMA per component is enough
                for a normal accurate to a few u. */
@@ -2005,6 +2016,8 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     /* sin²(angle) = A / (|a|²|d|²) against the parallel tolerance */
     thr = (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * aa * dd;
     parallel = A <= thr;
+    /* within sin = u of the axis but not parallel: the solver's double words answer */
+    if (!parallel && A <= (CYL__L)CYL__U * (CYL__L)CYL__U * aa * dd) return -1;
     if (ce) {
         /* CYL_PRECISE in the API's own type: every decision below is taken only where the
            computed value is farther from its threshold than an a-priori bound on its error
@@ -2615,6 +2628,9 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     f.Hn = f.H * f.na;
     f.r = r;
     f.sq = 0;
+    if (f.A > (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * f.aa * dd &&
+        f.A <= (CYL__L)CYL__U * (CYL__L)CYL__U * f.aa * dd)
+        return -1; /* within sin = u of the axis but not parallel: the solver answers */
     if (!(f.A > (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * f.aa * dd)) {
         /* parallel (sin² = A/(|a|²|d|²) within the tolerance): the wall is never hit; a cap
            is, where the ray point lies on its disk */
