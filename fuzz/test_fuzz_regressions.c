@@ -580,6 +580,44 @@ static void test_double_tangent_far_root_zero_normal(void)
   }
 }
 
+/* Finding 38 (fixed by the commit that added it; raw corpus:
+ * fuzz/corpus/finding-double-near-parallel-default-rim). Double, default tier, capped, found by
+ * fuzz_isect 17 min into its run on the exactly-parallel default (ccbb713): a ray within
+ * sin = 2^-53 of the axis, parallel under v1.0's tolerance and no longer, took the plain rim
+ * decision, whose root errs by about u/sin of the half height, and reported a wall hit whose
+ * point lies 3e-5 h/2 beyond the rim (v clamped to h/2). Such rays now go to the solver, which
+ * decides the rim from corrected roots. Checked: every wall hit's point lies within the slab. */
+static void test_double_near_parallel_default_rim(void)
+{
+  const double p0[3] = {0x0.306000000005fp-1022, -0x0.0c000ap-1022, -0x0.000000000003fp-1022};
+  const double p1[3] = {0x1.617165600003fp+771, 0x0.000004800008p-1022, 0x1.f5f5f5fp+502};
+  cyld_ray ray = {{-0x0.0410000002cp-1022, 0x0.000842bp-1022, 0x1.00000fbffffffp-975},
+                  {-0x1.d2d2d2d2dce3dp+1011, 0x0.000fbffff94fbp-1022, 0x0.000007f8p-1022},
+                  -0x1.f0001007f8001p+1000, 0x1.f5f0039c98cb8p+502};
+  const unsigned opts[] = {CYL_CAPS | CYL_OUTWARD | CYL_NO_ERRBOUND, CYL_CAPS, 0u};
+  cyld_cylinder cyl = cyld_from_segment(p0, p1, 0x1.f5f9b5f5f5f5fp+502);
+  size_t i;
+  int k, n;
+  for (i = 0; i < sizeof opts / sizeof opts[0]; i++) {
+    cyld_hit h[2];
+    memset(h, 0, sizeof h);
+    n = cyld_intersect_all(&ray, &cyl, opts[i], h);
+    TEST_ASSERT_TRUE_MESSAGE(n >= 0, "valid input");
+    for (k = 0; k < n; k++) {
+      long double al = sqrtl((long double)cyl.a[0] * cyl.a[0] + (long double)cyl.a[1] * cyl.a[1] +
+                             (long double)cyl.a[2] * cyl.a[2]), v = 0;
+      int j;
+      if (h[k].part != CYL_SIDE) continue;
+      for (j = 0; j < 3; j++)
+        v += (long double)cyl.a[j] * ((long double)ray.o[j] + (long double)h[k].t * ray.d[j] -
+                                      (long double)cyl.c[j]);
+      v /= al;
+      TEST_ASSERT_TRUE_MESSAGE(fabsl(v) <= (long double)cyl.h * 0.5L * (1 + 0x1p-20L),
+                               "a wall hit's point lies within the slab");
+    }
+  }
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -624,5 +662,6 @@ int main(void)
   RUN_TEST(test_double_precise_entry_points_disagree);
   RUN_TEST(test_double_cap_plane_parallel_nan);
   RUN_TEST(test_double_tangent_far_root_zero_normal);
+  RUN_TEST(test_double_near_parallel_default_rim);
   return UNITY_END();
 }
