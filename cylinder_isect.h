@@ -1136,11 +1136,6 @@ CYL__INL int CYL__P(solvet)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     f->R2l = f->sq = 0;
     for (k = 0; k < 3; k++) f->m[k] = f->ml[k] = 0; /* set by the wall; zero for -O3's sake */
     if (!CYL__P(slab)(f, sl, sp)) return 0;
-#ifndef CYL_NO_PRECISE
-    /* within sin = u of the axis the plain roots err by about u/sin of the half height at the
-       rim: the precise mode's corrected roots decide it */
-    if (f->A <= CYL__U * CYL__U * f->aa * CYL__P(dot)(f->d, f->d)) f->precise = 1;
-#endif
     /* sin²(angle) = A / (|a|²|d|²) */
     if (f->A <= f->para * f->para * f->aa * CYL__P(dot)(f->d, f->d)) {
         if (caps && f->H <= CYL__MAXR) {
@@ -1169,6 +1164,14 @@ CYL__INL int CYL__P(solvet)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         } else
 #endif
         {
+            /* within sin = u of the axis the plain roots err by about u/sin of the half
+               height at the rim: there the corrected roots decide it */
+            if (!tangent && f->A <= CYL__U * CYL__U * f->aa * CYL__P(dot)(f->d, f->d))
+                for (k = 0; k < 2; k++) {
+                    CYL__R tl;
+                    CYL__P(refine)(f->s, f->sl, f->m, f->ml, f->A, f->R2, f->R2l, f->sq, tw[k],
+                                   k, &tw[k], &tl);
+                }
             for (k = 0; k < 2; k++) pos[k] = tw[k] < sl[0] ? -1 : (tw[k] > sl[1] ? 1 : 0);
         }
         if (caps && f->H <= CYL__MAXR) {

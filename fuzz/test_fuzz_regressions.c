@@ -586,7 +586,7 @@ static void test_double_tangent_far_root_zero_normal(void)
  * sin = 2^-53 of the axis, parallel under v1.0's tolerance and no longer, took the plain rim
  * decision, whose root errs by about u/sin of the half height, and reported a wall hit whose
  * point lies 3e-5 h/2 beyond the rim (v clamped to h/2). Such rays now go to the solver, which
- * decides the rim from corrected roots. Checked: every wall hit's point lies within the slab. */
+ * corrects both roots before it decides the rim. Checked: every wall hit's point lies within the slab. */
 static void test_double_near_parallel_default_rim(void)
 {
   const double p0[3] = {0x0.306000000005fp-1022, -0x0.0c000ap-1022, -0x0.000000000003fp-1022};
