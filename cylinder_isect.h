@@ -132,8 +132,8 @@
    is the benign ones), t within 0.5 ulps on the well-conditioned hits of the benign families;
    CYL_PRECISE: none beyond the band in any family, 0.5 ulps. Cost per capped call on the
    well-conditioned family (instructions by callgrind, time the median of 5 runs): float 394
-   instructions, 58 ns (precise 394, 65 ns; without t_err and the normal 263, 48 ns), double
-   670, 109 ns (precise 1115, 163 ns; without t_err and the normal 563, 83 ns), against 119 and
+   instructions, 66 ns (precise 394, 66 ns; without t_err and the normal 263, 45 ns), double
+   670, 110 ns (precise 1115, 158 ns; without t_err and the normal 563, 85 ns), against 119 and
    118 instructions, 43 and 50 ns for the end-point (pa, pb, ra) formulation fed its own input
    form, which misclassifies 19,020 float and 14,704 double cases beyond the band. How each
    path gets there: N9; where the guarantees weaken (extreme ratios, flat disks): N11.
