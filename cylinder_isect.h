@@ -1,4 +1,4 @@
-/* cylinder_isect.h - v1.1.0 - ray/cylinder intersection in float and double, C99, one header.
+/* cylinder_isect.h - v1.0.0 - ray/cylinder intersection in float and double, C99, one header.
 
    Ray against a finite cylinder given by center c, axis a, radius r and height h: the open
    tube by default, the capped solid and the infinite tube as options; nearest hit, both
@@ -63,14 +63,10 @@
                      counts as a hit (both crossings, at or near the same t) unless
                      CYL_NO_TANGENT is given; there t is only determined to about √u (N11)
                      and t_err says so.
-     CYL_F_PARALLEL  sin(angle between d and a) <= CYL_PARALLEL_TOL, by default 0: d is
-                     exactly along the axis (a × d = 0, decided from exact products), so the
-                     wall is never crossed. The wall is then never hit; with CYL_CAPS a cap is
-                     hit where the ray point lies inside its disk. Any other direction, however
-                     close to the axis, gets the wall crossings its inputs determine (a ray
-                     from the wall can cross it again a few radii along; an origin off the wall
-                     gives t beyond 1/sin radii, a miss where not representable). A nonzero
-                     tolerance is the caller's policy. No inf, NaN or division by zero.
+     CYL_F_PARALLEL  sin(angle between d and a) <= CYL_PARALLEL_TOL: the direction is parallel
+                     to the axis within the rounding of its own components (N10). The wall is
+                     then never hit; with CYL_CAPS a cap is hit where the ray point lies inside
+                     its disk. No inf, NaN or division by zero either way.
    A hit exactly on the rim (the circle where wall and cap meet) is reported as CYL_SIDE.
 
    Errors, checked in this order; *hit is never touched on an error:
@@ -118,8 +114,8 @@
                            VFP-D, RV64D, s390x, ppc64)  float (always so with CYL_NO_DOUBLE)
      CYL_TANGENT_TOLF      2^-16 = 2^-(24-8)            tangent band on e = 1 − ρ²/r²
      CYL_TANGENT_TOL       2^-45 = 2^-(53-8)
-     CYL_PARALLEL_TOLF     0 (exactly parallel only)    parallel bound on sin(angle): a
-     CYL_PARALLEL_TOL      0                            policy of the caller (e.g. 2^-24)
+     CYL_PARALLEL_TOLF     2^-24 = u (float)            parallel bound on sin(angle)
+     CYL_PARALLEL_TOL      2^-53 = u (double)
      CYL_HEADER_FILENAME   "cylinder_isect.h"           how this file includes itself
 
    ACCURACY
@@ -153,7 +149,7 @@
 #define CYLINDER_ISECT_H
 
 #define CYL_VERSION_MAJOR 1
-#define CYL_VERSION_MINOR 1
+#define CYL_VERSION_MINOR 0
 #define CYL_VERSION_PATCH 0
 
 #if defined(__FAST_MATH__)
@@ -245,10 +241,10 @@
 #define CYL_TANGENT_TOL (1.0 / 35184372088832.0)              /* 2^-45 */
 #endif
 #ifndef CYL_PARALLEL_TOLF
-#define CYL_PARALLEL_TOLF 0.0f                                /* exactly parallel only */
+#define CYL_PARALLEL_TOLF (1.0f / 16777216.0f)                /* 2^-24 */
 #endif
 #ifndef CYL_PARALLEL_TOL
-#define CYL_PARALLEL_TOL 0.0
+#define CYL_PARALLEL_TOL (1.0 / 9007199254740992.0)           /* 2^-53 */
 #endif
 
 /* CYL_PRECISE's fast path: at most this many exact-quadratic steps with the plain √ from one
@@ -1164,14 +1160,6 @@ CYL__INL int CYL__P(solvet)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         } else
 #endif
         {
-            /* within sin = u of the axis the plain roots err by about u/sin of the half
-               height at the rim: there the corrected roots decide it */
-            if (!tangent && f->A <= CYL__U * CYL__U * f->aa * CYL__P(dot)(f->d, f->d))
-                for (k = 0; k < 2; k++) {
-                    CYL__R tl;
-                    CYL__P(refine)(f->s, f->sl, f->m, f->ml, f->A, f->R2, f->R2l, f->sq, tw[k],
-                                   k, &tw[k], &tl);
-                }
             for (k = 0; k < 2; k++) pos[k] = tw[k] < sl[0] ? -1 : (tw[k] > sl[1] ? 1 : 0);
         }
         if (caps && f->H <= CYL__MAXR) {
@@ -1313,13 +1301,7 @@ CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, un
            y × a normalised. */
         for (i = 0; i < 3; i++) y[i] = CYL__FMAR(c->t, f->s[i], f->m[i]) + (f->ml[i] + c->t * f->sl[i]);
         ys = CYL__P(dot)(y, f->s);
-        {
-            /* a·x(t) = a·w + t·a·d from double words: the two cancel for an origin far along
-               the axis and a crossing near the middle (rays close to the axis direction) */
-            CYL__R p = c->t * f->ad, z, ze;
-            CYL__P(two_sum)(f->aw, p, &z, &ze);
-            v = (z + (ze + CYL__FMAR(c->t, f->ad, -p) + f->awl + c->t * f->adl)) / f->na;
-        }
+        v = CYL__FMAR(c->t, f->ad, f->aw) / f->na;
         if (!(opts & CYL_NO_NORMAL)) {
             /* y ⊥ a, so |y × a| = |y||a| has no cancellation: one FMA per component is enough
                for a normal accurate to a few u. */
@@ -2019,8 +2001,6 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     /* sin²(angle) = A / (|a|²|d|²) against the parallel tolerance */
     thr = (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * aa * dd;
     parallel = A <= thr;
-    /* within sin = u of the axis but not parallel: the solver's double words answer */
-    if (!parallel && A <= (CYL__L)CYL__U * (CYL__L)CYL__U * aa * dd) return -1;
     if (ce) {
         /* CYL_PRECISE in the API's own type: every decision below is taken only where the
            computed value is farther from its threshold than an a-priori bound on its error
@@ -2631,9 +2611,6 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     f.Hn = f.H * f.na;
     f.r = r;
     f.sq = 0;
-    if (f.A > (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * f.aa * dd &&
-        f.A <= (CYL__L)CYL__U * (CYL__L)CYL__U * f.aa * dd)
-        return -1; /* within sin = u of the axis but not parallel: the solver answers */
     if (!(f.A > (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * f.aa * dd)) {
         /* parallel (sin² = A/(|a|²|d|²) within the tolerance): the wall is never hit; a cap
            is, where the ray point lies on its disk */
@@ -3058,9 +3035,10 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
    few u times (1 + |o − c|/r) (see the error analysis at the wall solver), so 256u =
    2^-(p−8) classifies every contact whose |e| exceeds it correctly for origins within tens
    of radii (everywhere on CYL_PRECISE), and it is the band inside which the tests accept
-   either answer. Parallel: a × d is exact when a is axis-aligned and within a few ulps of
-   itself otherwise, so no angle above 0 leaves the crossing undetermined by the data (a ray
-   from the wall at sin = 1.5e-8 crosses it again 36 radii along: tests/contract/tangent.c).
+   either answer. Parallel: below sin = u a half-ulp change of one
+   component of d makes it exactly parallel. That is not true of every such ray: a ray from
+   the wall can cross it again a few dozen radii along, a crossing the inputs determine (a × d
+   is exact for an axis-aligned a), which the float API then drops: a limit of this rule.
 
    N11. Extreme ratios: when r is below 2^-31 (float computed in float) or 2^-435 (double, and so
    out of reach of float inputs computed in double) of |o − c|, r² underflows in the frame:

@@ -585,8 +585,9 @@ static void test_double_tangent_far_root_zero_normal(void)
  * fuzz_isect 17 min into its run on the exactly-parallel default (ccbb713): a ray within
  * sin = 2^-53 of the axis, parallel under v1.0's tolerance and no longer, took the plain rim
  * decision, whose root errs by about u/sin of the half height, and reported a wall hit whose
- * point lies 3e-5 h/2 beyond the rim (v clamped to h/2). Such rays now go to the solver, which
- * corrects both roots before it decides the rim. Checked: every wall hit's point lies within the slab. */
+ * point lies 3e-5 h/2 beyond the rim (v clamped to h/2). The default was reverted: under the
+ * v1.0 rule the ray is parallel. Checked: every wall hit's point lies within the slab, which
+ * any future parallel rule must keep. */
 static void test_double_near_parallel_default_rim(void)
 {
   const double p0[3] = {0x0.306000000005fp-1022, -0x0.0c000ap-1022, -0x0.000000000003fp-1022};
