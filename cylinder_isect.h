@@ -123,14 +123,14 @@
    Measured against the exact MPFR reference of ref/ on eleven case families, 6000 cases each
    with and without caps (`make report`, seed 20261122, x86-64, -O2 -march=x86-64-v3;
    bench/REPORT.md has every family; `make test` asserts the targets on a fixed-seed sample):
-   t_err contained the exact t in all 516,407 float and 523,679 double hits of every variant;
+   t_err contained the exact t in all 510,576 float and 523,679 double hits of every variant;
    default path: no misclassification beyond the band in any family in either API (the target
    is the benign ones), t within 0.5 ulps on the well-conditioned hits of the benign families;
    CYL_PRECISE: none beyond the band in any family, 0.5 ulps. Cost per capped call on the
-   well-conditioned family (instructions by callgrind, time the median of 5 runs): float 394
-   instructions, 66 ns (precise 394, 66 ns; without t_err and the normal 263, 45 ns), double
-   670, 110 ns (precise 1115, 158 ns; without t_err and the normal 563, 85 ns), against 119 and
-   118 instructions, 43 and 50 ns for the end-point (pa, pb, ra) formulation fed its own input
+   well-conditioned family (instructions by callgrind, time the median of 5 runs): float 386
+   instructions, 59 ns (precise 386, 58 ns; without t_err and the normal 254, 40 ns), double
+   651, 86 ns (precise 1106, 120 ns; without t_err and the normal 555, 72 ns), against 119 and
+   118 instructions, 43 and 47 ns for the end-point (pa, pb, ra) formulation fed its own input
    form, which misclassifies 19,020 float and 14,704 double cases beyond the band. How each
    path gets there: N9; where the guarantees weaken (extreme ratios, flat disks): N11.
 
