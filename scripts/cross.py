@@ -65,6 +65,17 @@ TARGETS = [("x86_64", "x86-64 -O2 -mfma"), ("aarch64", "AArch64 -O2"), ("m4f", "
            ("m0", "Cortex-M0 -Os"), ("rv32", "RV32IMAFC -Os")]
 
 
+def replace_block(doc, begin, end, block):
+    """Put block between the markers begin..end of doc (appended where they are missing)."""
+    text = open(doc).read() if os.path.exists(doc) else "# Embedded targets\n"
+    if begin in text and end in text:
+        text = re.sub(re.escape(begin) + ".*?" + re.escape(end), lambda m: block, text, flags=re.S)
+    else:
+        text = text.rstrip("\n") + "\n\n" + block + "\n"
+    with open(doc, "w") as f:
+        f.write(text)
+
+
 def cpu_model():
     try:
         with open("/proc/cpuinfo") as f:
@@ -200,13 +211,7 @@ def table(sizes_csv, timing_csv, configs_txt, doc, bench_json=""):
     out.append(END)
     block = "\n".join(out)
 
-    text = open(doc).read() if os.path.exists(doc) else "# Embedded targets\n\n"
-    if BEGIN in text and END in text:
-        text = re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: block, text, flags=re.S)
-    else:
-        text = text.rstrip("\n") + "\n\n" + block + "\n"
-    with open(doc, "w") as f:
-        f.write(text)
+    replace_block(doc, BEGIN, END, block)
 
 
 
@@ -235,14 +240,7 @@ def lint_doc(dev, tidy, doc, raw):
         out.append(f"| `{c[1:]}` | {'on' if c[0] == '+' else 'off'} | {reason.strip()} |")
     out += ["", "<!-- lint:end -->"]
     block = "\n".join(out)
-    text = open(doc).read() if os.path.exists(doc) else "# Embedded targets\n"
-    b, e = "<!-- lint:begin", "<!-- lint:end -->"
-    if b in text and e in text:
-        text = re.sub(re.escape(b) + ".*?" + re.escape(e), lambda m: block, text, flags=re.S)
-    else:
-        text = text.rstrip("\n") + "\n\n" + block + "\n"
-    with open(doc, "w") as f:
-        f.write(text)
+    replace_block(doc, "<!-- lint:begin", "<!-- lint:end -->", block)
 
 COMMANDS = {"stack": (stack, 2, 2), "table": (table, 4, 5), "lint-doc": (lint_doc, 4, 4)}
 
