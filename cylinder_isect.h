@@ -63,10 +63,11 @@
                      counts as a hit (both crossings, at or near the same t) unless
                      CYL_NO_TANGENT is given; there t is only determined to about √u (N11)
                      and t_err says so.
-     CYL_F_PARALLEL  sin(angle between d and a) <= CYL_PARALLEL_TOL: the direction is parallel
-                     to the axis within the rounding of its own components (N10). The wall is
-                     then never hit; with CYL_CAPS a cap is hit where the ray point lies inside
-                     its disk. No inf, NaN or division by zero either way.
+     CYL_F_PARALLEL  sin(angle between d and a) <= CYL_PARALLEL_TOL: treated as parallel. The
+                     wall is then never hit; with CYL_CAPS a cap is hit where the ray point lies
+                     inside its disk. No inf, NaN or division by zero either way. A wall crossing
+                     that such a ray's inputs do determine is dropped too (a ray leaving the
+                     wall can cross it again tens of radii along): a limit of this rule (N10).
    A hit exactly on the rim (the circle where wall and cap meet) is reported as CYL_SIDE.
 
    Errors, checked in this order; *hit is never touched on an error:
@@ -3038,7 +3039,8 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
    either answer. Parallel: below sin = u a half-ulp change of one
    component of d makes it exactly parallel. That is not true of every such ray: a ray from
    the wall can cross it again a few dozen radii along, a crossing the inputs determine (a × d
-   is exact for an axis-aligned a), which the float API then drops: a limit of this rule.
+   is exact for an axis-aligned a), which the float API then drops: a limit of this rule,
+   pinned by test_parallel_rule_drops_secondary_ray_from_wall in tests/contract/tangent.c.
 
    N11. Extreme ratios: when r is below 2^-31 (float computed in float) or 2^-435 (double, and so
    out of reach of float inputs computed in double) of |o − c|, r² underflows in the frame:

@@ -202,6 +202,56 @@ static void test_parallel_boundary(void)
     EQ_INT(0, CYL(occluded)(&ray, &cyl, CYL_CAPS), "parallel outside the radius");
 }
 
+#ifndef T_DOUBLE
+/* The parallel rule's documented limit (N10). A float ray leaves the wall of an axis-aligned tube
+ * with sin(d, a) = 1.5e-8, below CYL_PARALLEL_TOLF = 2^-24, and crosses the wall again 36 radii
+ * along the ray, at t = 2.735e-8. The inputs determine that crossing (a x d is exact for this a),
+ * yet the float API calls the ray parallel and drops it, with and without CYL_PRECISE. The double
+ * API, whose tolerance is 2^-53, finds it within t_err. A change of the rule must change this test. */
+static void test_parallel_rule_drops_secondary_ray_from_wall(void)
+{
+    const cylf_ray ray = {{-0.023321451619267464f, 0.029028177261352539f, -0.65008270740509033f},
+                          {-0.744712233543396f, 0.029028160497546196f, -49508412.0f}, 0.0f, 1.0f};
+    const cylf_cylinder cyl = {{0.0f, 0.0f, -1.3091078996658325f}, {0.0f, 0.0f, 1.0f},
+                               0.037236087024211884f, 2.6170697212219238f};
+    cylf_hit h;
+    /* the exact crossing: (o + t d) on the circle of radius r about the z axis, the root near
+     * the origin (the other is negative); squares of floats are exact in long double */
+    const long double ox = (long double)ray.o[0], oy = (long double)ray.o[1];
+    const long double dx = (long double)ray.d[0], dy = (long double)ray.d[1];
+    const long double r = (long double)cyl.r;
+    long double A = dx * dx + dy * dy, B = ox * dx + oy * dy, C = ox * ox + oy * oy - r * r;
+    long double q = -(B + (B < 0 ? -1 : 1) * sqrtl(B * B - A * C)), t_ref = C / q;
+    CHECK(t_ref > 0 && t_ref < 1 && q / A < 0, "one crossing in [0, 1], the other behind");
+    sentinel(&h, 1);
+    EQ_INT(CYL_MISS, cylf_intersect(&ray, &cyl, 0u, &h), "float API: dropped as parallel");
+#ifndef CYL_NO_PRECISE
+    EQ_INT(CYL_MISS, cylf_intersect(&ray, &cyl, CYL_PRECISE, &h), "CYL_PRECISE: dropped too");
+#endif
+#ifndef CYL_NO_DOUBLE
+    {
+        cyld_ray dray;
+        cyld_cylinder dcyl;
+        cyld_hit dh;
+        int i;
+        for (i = 0; i < 3; i++) {
+            dray.o[i] = (double)ray.o[i];
+            dray.d[i] = (double)ray.d[i];
+            dcyl.c[i] = (double)cyl.c[i];
+            dcyl.a[i] = (double)cyl.a[i];
+        }
+        dray.tmin = (double)ray.tmin;
+        dray.tmax = (double)ray.tmax;
+        dcyl.r = (double)cyl.r;
+        dcyl.h = (double)cyl.h;
+        EQ_INT(CYL_HIT, cyld_intersect(&dray, &dcyl, 0u, &dh), "double API: the crossing is hit");
+        EQ_INT(CYL_SIDE, dh.part, "on the wall");
+        NEAR(t_ref, dh.t, (long double)dh.t_err + TOL_REF * t_ref, "double: t within t_err");
+    }
+#endif
+}
+#endif
+
 /* ================================================================== tolerance macros */
 static void test_tolerance_macros(void)
 {
@@ -220,6 +270,9 @@ static void run_tangent(void)
     RUN_TEST(test_rim_oblique);
     RUN_TEST(test_tangent_boundary);
     RUN_TEST(test_parallel_boundary);
+#ifndef T_DOUBLE
+    RUN_TEST(test_parallel_rule_drops_secondary_ray_from_wall);
+#endif
     RUN_TEST(test_tolerance_macros);
 }
 
