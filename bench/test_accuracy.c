@@ -261,6 +261,7 @@ static void trange_case(int prec, const bench_case *k, unsigned opts, double tmi
             cyl.c[j] = (float)k->c[j]; cyl.a[j] = (float)k->a[j];
         }
         ray.tmin = (float)tmin; ray.tmax = (float)k->tmax; cyl.r = (float)k->r; cyl.h = (float)k->h;
+        memset(&h, 0, sizeof h); /* a miss leaves it untouched, and it is read below */
         *rc = cylf_intersect(&ray, &cyl, opts, &h);
         *t = h.t; *terr = h.t_err; *part = h.part;
     } else {
@@ -269,6 +270,7 @@ static void trange_case(int prec, const bench_case *k, unsigned opts, double tmi
             ray.o[j] = k->o[j]; ray.d[j] = k->d[j]; cyl.c[j] = k->c[j]; cyl.a[j] = k->a[j];
         }
         ray.tmin = tmin; ray.tmax = k->tmax; cyl.r = k->r; cyl.h = k->h;
+        memset(&h, 0, sizeof h);
         *rc = cyld_intersect(&ray, &cyl, opts, &h);
         *t = h.t; *terr = h.t_err; *part = h.part;
     }
