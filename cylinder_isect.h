@@ -1709,11 +1709,12 @@ CYL__SLOW CYL__L CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
    moves it by up to eC/|q|, which for an origin near the wall grows like 1/sin of the angle to the axis: a
    ray nearly parallel to it. At a rim that error is also multiplied by
    r/h, so even C's rounding in double can decide a float rim there. Compared without a
-   division, with a factor 4 for the roundings of the test; infinite ends never qualify. */
+   division; eC comes with a factor 4 for the roundings of the test; infinite ends never
+   qualify. */
 CYL__INL int CYL__P(cnear)(CYL__L t, CYL__L v, CYL__L q, CYL__L eC, CYL__L ad, CYL__L Hn,
                           int ends, CYL__L tsc, CYL__L tmin, CYL__L tmax)
 {
-    CYL__L aq = CYL__P(labs)(q), e = 4 * eC, tu = t * tsc;
+    CYL__L aq = CYL__P(labs)(q), e = eC, tu = t * tsc;
     return CYL__P(labs)(CYL__P(labs)(v) - Hn) * aq <= e * CYL__P(labs)(ad) ||
            (ends && (CYL__P(labs)(tu - tmin) * aq <= e * tsc ||
                      CYL__P(labs)(tu - tmax) * aq <= e * tsc));
@@ -1779,13 +1780,13 @@ CYL__INL CYL__R CYL__P(errup)(CYL__L et, CYL__L tu, CYL__R tr)
 {
     CYL__R te;
     et += CYL__P(labs)(tu - (CYL__L)tr);
-    if (CYL__P(labs)(tu) < CYL__LMIN) et += CYL__LMIN * 2 * CYL__LU;
 #if CYL__WIDE
     /* widened in the wider type before the conversion, which then cannot land below et (an
        ulp is at most 2u|x|, or the subnormal step): no branch, and no subnormal operand,
        which costs a microcode assist on x86 */
     te = (CYL__R)(et * (1 + 4 * (CYL__L)CYL__U) + (CYL__L)CYL__MINR * 2 * (CYL__L)CYL__U);
 #else
+    if (CYL__P(labs)(tu) < CYL__LMIN) et += CYL__LMIN * 2 * CYL__LU;
     te = (CYL__R)et;
     if ((CYL__L)te < et) te += CYL__P(abs)(te) * (2 * CYL__U) + CYL__MINR * 2 * CYL__U;
 #endif
@@ -2098,7 +2099,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                 if (comp ? !noroots
                          : (CYL__P(labs)(C) <= 64 * u * (MM + R2) ||
                             CYL__P(cnear)(tb, CYL__LMADD(tb, ad, aw), q,
-                                          16 * u * (3 * aa * mw * mw + R2), ad,
+                                          64 * u * (3 * aa * mw * mw + R2), ad,
                                           hfin ? Hn : (CYL__L)CYL__LMAX * 2, 1, tsc,
                                           (CYL__L)ray->tmin, (CYL__L)ray->tmax))) {
                     /* an origin on the surface within the roundings (a secondary ray), or a
@@ -2558,8 +2559,15 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
    range return -1 (nothing written), and the solver answers (the fast path, for CYL_PRECISE
    in the double API). The double API's crossings are corrected from double words as in the
    fast path (fref, fcapt); t_err is the residual bound at the returned t. */
-CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
-                          int want, CYL__N(hit) *hits)
+CYL__SLOW int CYL__P(qscaled)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                              unsigned opts, int want, CYL__N(hit) *hits);
+/* The lean path on the frame a, d, w = o − c, r, h (tsc, vsc and lf as rescale sets them):
+   inlined twice, for the caller's data (scaled = 0) and, out of line, for the rescaled frame
+   (qscaled), so that the hot path merges no scaled values into its own. */
+CYL__INL int CYL__P(qrun)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                         int want, CYL__N(hit) *hits, const CYL__L a[3], const CYL__L d[3],
+                         const CYL__L w[3], CYL__L r, CYL__L h, CYL__L tsc, CYL__L vsc,
+                         const CYL__R lf[2], int scaled)
 {
     /* |o − c| <= 2^30 r and 2^30 h/2, as the fast path; CYL_PRECISE (here only for the float
        API computed in double with an FMA) keeps a headroom of 2^28 (N9) */
@@ -2567,47 +2575,55 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
                                              : (CYL__L)1152921504606846976.0; /* 2^60 */
     const CYL__L hi = CYL__LHI;
     CYL__P(qf) f;
-    CYL__L r, h, dd, ww, MM, r2, band, P, D, B, C, sq, q, t0, t1, v0, v1, tmin, tmax;
-    int caps = (opts & CYL_CAPS) != 0, sg0, sg1, in0, in1, scaled = 0;
+    CYL__L dd, ww, MM, r2, band, P, D, B, C, sq, q, t0, t1, v0, v1, tmin, tmax;
+    int caps = (opts & CYL_CAPS) != 0, sg0, sg1, in0, in1;
     unsigned tf;
 
-    CYL__P(frame_in)(ray, cyl, f.a, f.d, f.w);
-    r = (CYL__L)cyl->r;
-    h = (CYL__L)cyl->h;
+    f.a[0] = a[0];
+    f.a[1] = a[1];
+    f.a[2] = a[2];
+    f.d[0] = d[0];
+    f.d[1] = d[1];
+    f.d[2] = d[2];
+    f.w[0] = w[0];
+    f.w[1] = w[1];
+    f.w[2] = w[2];
     tmin = (CYL__L)ray->tmin;
     tmax = (CYL__L)ray->tmax;
-    f.tsc = f.vsc = 1;
-    f.lf[0] = f.lf[1] = 1;
-    for (;;) {
-        f.s[0] = CYL__QX(f.a[1], f.d[2], f.a[2], f.d[1]);
-        f.s[1] = CYL__QX(f.a[2], f.d[0], f.a[0], f.d[2]);
-        f.s[2] = CYL__QX(f.a[0], f.d[1], f.a[1], f.d[0]);
-        f.m[0] = CYL__QX(f.a[1], f.w[2], f.a[2], f.w[1]);
-        f.m[1] = CYL__QX(f.a[2], f.w[0], f.a[0], f.w[2]);
-        f.m[2] = CYL__QX(f.a[0], f.w[1], f.a[1], f.w[0]);
-        f.aa = CYL__P(ldot)(f.a, f.a);
-        dd = CYL__P(ldot)(f.d, f.d);
-        f.A = CYL__P(ldot)(f.s, f.s);
-        MM = CYL__P(ldot)(f.m, f.m);
-        r2 = r * r;
-        f.R2 = r2 * f.aa;
-        /* the fast path's range check, which validates too */
-        if (f.aa >= 1 / CYL__LDIR && f.aa <= CYL__LDIR && dd >= 1 / CYL__LDIR &&
-            dd <= CYL__LDIR && MM + f.R2 <= hi && f.R2 >= 1 / hi && r > 0 && h > 0 &&
-            tmin <= tmax)
-            break;
-        if (scaled++ || CYL__P(rescale)(ray, cyl, f.a, f.d, f.w, &r, &h, f.lf, &f.tsc, &f.vsc))
-            return -1;
-    }
+    f.tsc = tsc;
+    f.vsc = vsc;
+    f.lf[0] = lf[0];
+    f.lf[1] = lf[1];
+    f.s[0] = CYL__QX(f.a[1], f.d[2], f.a[2], f.d[1]);
+    f.s[1] = CYL__QX(f.a[2], f.d[0], f.a[0], f.d[2]);
+    f.s[2] = CYL__QX(f.a[0], f.d[1], f.a[1], f.d[0]);
+    f.m[0] = CYL__QX(f.a[1], f.w[2], f.a[2], f.w[1]);
+    f.m[1] = CYL__QX(f.a[2], f.w[0], f.a[0], f.w[2]);
+    f.m[2] = CYL__QX(f.a[0], f.w[1], f.a[1], f.w[0]);
+    f.aa = CYL__P(ldot)(f.a, f.a);
+    dd = CYL__P(ldot)(f.d, f.d);
+    f.A = CYL__P(ldot)(f.s, f.s);
+    MM = CYL__P(ldot)(f.m, f.m);
+    r2 = r * r;
+    f.R2 = r2 * f.aa;
+    /* what else needs w and d, formed here: they then die */
+    ww = CYL__P(ldot)(f.w, f.w);
+    f.aw = CYL__P(ldot)(f.a, f.w);
+    f.ad = CYL__P(ldot)(f.a, f.d);
+    P = CYL__P(ldot)(f.w, f.s);
+    f.w1 = CYL__P(l1)(f.w);
+    f.d1 = CYL__P(l1)(f.d);
+    /* the fast path's range check, which validates too */
+    if (!(f.aa >= 1 / CYL__LDIR && f.aa <= CYL__LDIR && dd >= 1 / CYL__LDIR &&
+          dd <= CYL__LDIR && MM + f.R2 <= hi && f.R2 >= 1 / hi && r > 0 && h > 0 &&
+          tmin <= tmax))
+        return scaled ? -1 : CYL__P(qscaled)(ray, cyl, opts, want, hits);
     /* the fast path's hand-over of far origins and of an h/2 that rounds; cap planes within
        range */
-    ww = CYL__P(ldot)(f.w, f.w);
     f.H = h * (CYL__L)0.5;
     if (!(ww <= far2 * r2 && (CYL__WIDE || !(f.H + f.H < h || f.H + f.H > h)) &&
           (!(h <= (CYL__L)CYL__MAXR) || (ww <= far2 * (f.H * f.H) && f.H * f.H * f.aa <= hi * hi))))
         return -1;
-    f.aw = CYL__P(ldot)(f.a, f.w);
-    f.ad = CYL__P(ldot)(f.a, f.d);
     f.na = CYL__LSQRT(f.aa);
     f.Hn = f.H * f.na;
     f.r = r;
@@ -2616,8 +2632,6 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         /* parallel (sin² = A/(|a|²|d|²) within the tolerance): the wall is never hit; a cap
            is, where the ray point lies on its disk */
         if (!caps || !(h <= (CYL__L)CYL__MAXR)) return 0;
-        f.w1 = CYL__P(l1)(f.w);
-        f.d1 = CYL__P(l1)(f.d);
         tf = CYL_F_PARALLEL;
         sg0 = f.ad > 0 ? -1 : 1;
         sg1 = -sg0;
@@ -2627,14 +2641,11 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         in1 = CYL__P(fdisk)(f.m, f.s, f.R2, t1);
     } else {
         /* D = r²A − P² = A(r² − ρ²): beside the infinite tube below −band, a miss */
-        P = CYL__P(ldot)(f.w, f.s);
         D = CYL__LMADD(r2, f.A, -(P * P));
         band = (CYL__L)CYL__TANG * r2 * f.A;
         if (D < -band) return 0;
         tf = D <= band ? CYL_F_TANGENT : 0u;
         if (tf && (opts & CYL_NO_TANGENT)) return 0;
-        f.w1 = CYL__P(l1)(f.w);
-        f.d1 = CYL__P(l1)(f.d);
         B = CYL__P(ldot)(f.m, f.s);
         C = MM - f.R2;
         f.sq = sq = CYL__LSQRT(f.aa * (D > 0 ? D : 0));
@@ -2651,14 +2662,14 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
            from the exact o − c (out of line: a call here would cost every call its spills).
            Against tmin and tmax C/q errs by at most about 8u/sin of r/|d| (u of double), far
            inside float's t-range band, so surface origins need nothing. */
-        if (CYL__P(cnear)(t1, v1, q, 16 * (CYL__L)CYL__LU * (f.aa * ww + f.R2), f.ad, f.Hn, 0,
+        if (CYL__P(cnear)(t1, v1, q, 64 * (CYL__L)CYL__LU * (f.aa * ww + f.R2), f.ad, f.Hn, 0,
                           f.tsc, tmin, tmax))
             return -1;
 #else
         /* an origin on the surface within the roundings, or a root C/q that C's rounding could
            move across a rim or an end of the t range (cnear): C from the exact o − c */
         if (CYL__P(labs)(C) <= 64 * (CYL__L)CYL__LU * (MM + f.R2) ||
-            CYL__P(cnear)(t1, v1, q, 16 * (CYL__L)CYL__LU * (f.aa * ww + f.R2), f.ad, f.Hn, 1,
+            CYL__P(cnear)(t1, v1, q, 64 * (CYL__L)CYL__LU * (f.aa * ww + f.R2), f.ad, f.Hn, 1,
                           f.tsc, tmin, tmax)) {
             C = CYL__P(fc0)(ray, cyl, f.a, f.d, f.s, r, f.lf);
             t1 = C / q;
@@ -2715,6 +2726,27 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         if (n == 2) CYL__P(order2)(hits);
         return n;
     }
+}
+
+/* The rescaled frame (rescale), out of line: only data beyond the range check come here. */
+CYL__SLOW int CYL__P(qscaled)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                              unsigned opts, int want, CYL__N(hit) *hits)
+{
+    CYL__L a[3], d[3], w[3], r = (CYL__L)cyl->r, h = (CYL__L)cyl->h, tsc = 1, vsc = 1;
+    CYL__R lf[2] = {1, 1};
+    CYL__P(frame_in)(ray, cyl, a, d, w);
+    if (CYL__P(rescale)(ray, cyl, a, d, w, &r, &h, lf, &tsc, &vsc)) return -1;
+    return CYL__P(qrun)(ray, cyl, opts, want, hits, a, d, w, r, h, tsc, vsc, lf, 1);
+}
+
+CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                          int want, CYL__N(hit) *hits)
+{
+    const CYL__R one[2] = {1, 1};
+    CYL__L a[3], d[3], w[3];
+    CYL__P(frame_in)(ray, cyl, a, d, w);
+    return CYL__P(qrun)(ray, cyl, opts, want, hits, a, d, w, (CYL__L)cyl->r, (CYL__L)cyl->h, 1, 1,
+                        one, 0);
 }
 #undef CYL__QX
 #endif
