@@ -2559,121 +2559,110 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
    range return -1 (nothing written), and the solver answers (the fast path, for CYL_PRECISE
    in the double API). The double API's crossings are corrected from double words as in the
    fast path (fref, fcapt); t_err is the residual bound at the returned t. */
-CYL__SLOW int CYL__P(qscaled)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
-                              unsigned opts, int want, CYL__N(hit) *hits);
-/* The lean path on the frame a, d, w = o − c, r, h (tsc, vsc and lf as rescale sets them):
-   inlined twice, for the caller's data (scaled = 0) and, out of line, for the rescaled frame
-   (qscaled), so that the hot path merges no scaled values into its own. */
-CYL__INL int CYL__P(qrun)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
-                         int want, CYL__N(hit) *hits, const CYL__L a[3], const CYL__L d[3],
-                         const CYL__L w[3], CYL__L r, CYL__L h, CYL__L tsc, CYL__L vsc,
-                         const CYL__R lf[2], int scaled)
+/* The lean path's frame from a, d, w (in f) and r: s, m and what needs w and d, formed before
+   the range check so that w and d die there. Returns the fast path's range check, which
+   validates too. */
+CYL__INL int CYL__P(qframe)(CYL__P(qf) *f, CYL__L r, CYL__L h, CYL__L tmin, CYL__L tmax,
+                           CYL__L *dd, CYL__L *MM, CYL__L *r2, CYL__L *ww, CYL__L *P)
+{
+    const CYL__L hi = CYL__LHI;
+    f->s[0] = CYL__QX(f->a[1], f->d[2], f->a[2], f->d[1]);
+    f->s[1] = CYL__QX(f->a[2], f->d[0], f->a[0], f->d[2]);
+    f->s[2] = CYL__QX(f->a[0], f->d[1], f->a[1], f->d[0]);
+    f->m[0] = CYL__QX(f->a[1], f->w[2], f->a[2], f->w[1]);
+    f->m[1] = CYL__QX(f->a[2], f->w[0], f->a[0], f->w[2]);
+    f->m[2] = CYL__QX(f->a[0], f->w[1], f->a[1], f->w[0]);
+    f->aa = CYL__P(ldot)(f->a, f->a);
+    *dd = CYL__P(ldot)(f->d, f->d);
+    f->A = CYL__P(ldot)(f->s, f->s);
+    *MM = CYL__P(ldot)(f->m, f->m);
+    *r2 = r * r;
+    f->R2 = *r2 * f->aa;
+    *ww = CYL__P(ldot)(f->w, f->w);
+    f->aw = CYL__P(ldot)(f->a, f->w);
+    f->ad = CYL__P(ldot)(f->a, f->d);
+    *P = CYL__P(ldot)(f->w, f->s);
+    f->w1 = CYL__P(l1)(f->w);
+    f->d1 = CYL__P(l1)(f->d);
+    return f->aa >= 1 / CYL__LDIR && f->aa <= CYL__LDIR && *dd >= 1 / CYL__LDIR &&
+           *dd <= CYL__LDIR && *MM + f->R2 <= hi && f->R2 >= 1 / hi && r > 0 && h > 0 &&
+           tmin <= tmax;
+}
+
+/* The lean path after its range check, on the frame f and what qframe formed (dd, MM, r2, ww,
+   P) with r, h, tmin and tmax in the frame's type; scaled = 1 for the rescaled frame. */
+CYL__INL int CYL__P(qbody)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                          int want, CYL__N(hit) *hits, CYL__P(qf) *f, CYL__L r, CYL__L h,
+                          CYL__L tmin, CYL__L tmax, CYL__L dd, CYL__L MM, CYL__L r2, CYL__L ww,
+                          CYL__L P, int scaled)
 {
     /* |o − c| <= 2^30 r and 2^30 h/2, as the fast path; CYL_PRECISE (here only for the float
        API computed in double with an FMA) keeps a headroom of 2^28 (N9) */
     const CYL__L far2 = (opts & CYL_PRECISE) ? (CYL__L)72057594037927936.0 /* 2^56 */
                                              : (CYL__L)1152921504606846976.0; /* 2^60 */
     const CYL__L hi = CYL__LHI;
-    CYL__P(qf) f;
-    CYL__L dd, ww, MM, r2, band, P, D, B, C, sq, q, t0, t1, v0, v1, tmin, tmax;
+    CYL__L HH, band, D, B, C, sq, q, t0, t1, v0, v1;
     int caps = (opts & CYL_CAPS) != 0, sg0, sg1, in0, in1;
     unsigned tf;
 
-    f.a[0] = a[0];
-    f.a[1] = a[1];
-    f.a[2] = a[2];
-    f.d[0] = d[0];
-    f.d[1] = d[1];
-    f.d[2] = d[2];
-    f.w[0] = w[0];
-    f.w[1] = w[1];
-    f.w[2] = w[2];
-    tmin = (CYL__L)ray->tmin;
-    tmax = (CYL__L)ray->tmax;
-    f.tsc = tsc;
-    f.vsc = vsc;
-    f.lf[0] = lf[0];
-    f.lf[1] = lf[1];
-    f.s[0] = CYL__QX(f.a[1], f.d[2], f.a[2], f.d[1]);
-    f.s[1] = CYL__QX(f.a[2], f.d[0], f.a[0], f.d[2]);
-    f.s[2] = CYL__QX(f.a[0], f.d[1], f.a[1], f.d[0]);
-    f.m[0] = CYL__QX(f.a[1], f.w[2], f.a[2], f.w[1]);
-    f.m[1] = CYL__QX(f.a[2], f.w[0], f.a[0], f.w[2]);
-    f.m[2] = CYL__QX(f.a[0], f.w[1], f.a[1], f.w[0]);
-    f.aa = CYL__P(ldot)(f.a, f.a);
-    dd = CYL__P(ldot)(f.d, f.d);
-    f.A = CYL__P(ldot)(f.s, f.s);
-    MM = CYL__P(ldot)(f.m, f.m);
-    r2 = r * r;
-    f.R2 = r2 * f.aa;
-    /* what else needs w and d, formed here: they then die */
-    ww = CYL__P(ldot)(f.w, f.w);
-    f.aw = CYL__P(ldot)(f.a, f.w);
-    f.ad = CYL__P(ldot)(f.a, f.d);
-    P = CYL__P(ldot)(f.w, f.s);
-    f.w1 = CYL__P(l1)(f.w);
-    f.d1 = CYL__P(l1)(f.d);
-    /* the fast path's range check, which validates too */
-    if (!(f.aa >= 1 / CYL__LDIR && f.aa <= CYL__LDIR && dd >= 1 / CYL__LDIR &&
-          dd <= CYL__LDIR && MM + f.R2 <= hi && f.R2 >= 1 / hi && r > 0 && h > 0 &&
-          tmin <= tmax))
-        return scaled ? -1 : CYL__P(qscaled)(ray, cyl, opts, want, hits);
     /* the fast path's hand-over of far origins and of an h/2 that rounds; cap planes within
-       range */
-    f.H = h * (CYL__L)0.5;
-    if (!(ww <= far2 * r2 && (CYL__WIDE || !(f.H + f.H < h || f.H + f.H > h)) &&
-          (!(h <= (CYL__L)CYL__MAXR) || (ww <= far2 * (f.H * f.H) && f.H * f.H * f.aa <= hi * hi))))
+       range (float data in double: H²|a|² <= 2^374 unless rescaled) */
+    f->H = h * (CYL__L)0.5;
+    HH = f->H * f->H; /* +inf for the infinite tube */
+    if (!(ww <= far2 * (HH < r2 ? HH : r2) &&
+          (CYL__WIDE || !(f->H + f->H < h || f->H + f->H > h)) &&
+          ((CYL__WIDE && !scaled) || !(h <= (CYL__L)CYL__MAXR) || HH * f->aa <= hi * hi)))
         return -1;
-    f.na = CYL__LSQRT(f.aa);
-    f.Hn = f.H * f.na;
-    f.r = r;
-    f.sq = 0;
-    if (!(f.A > (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * f.aa * dd)) {
+    f->na = CYL__LSQRT(f->aa);
+    f->Hn = f->H * f->na;
+    f->r = r;
+    f->sq = 0;
+    if (!(f->A > (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * f->aa * dd)) {
         /* parallel (sin² = A/(|a|²|d|²) within the tolerance): the wall is never hit; a cap
            is, where the ray point lies on its disk */
         if (!caps || !(h <= (CYL__L)CYL__MAXR)) return 0;
         tf = CYL_F_PARALLEL;
-        sg0 = f.ad > 0 ? -1 : 1;
+        sg0 = f->ad > 0 ? -1 : 1;
         sg1 = -sg0;
-        t0 = ((CYL__L)sg0 * f.Hn - f.aw) / f.ad;
-        t1 = ((CYL__L)sg1 * f.Hn - f.aw) / f.ad;
-        in0 = CYL__P(fdisk)(f.m, f.s, f.R2, t0);
-        in1 = CYL__P(fdisk)(f.m, f.s, f.R2, t1);
+        t0 = ((CYL__L)sg0 * f->Hn - f->aw) / f->ad;
+        t1 = ((CYL__L)sg1 * f->Hn - f->aw) / f->ad;
+        in0 = CYL__P(fdisk)(f->m, f->s, f->R2, t0);
+        in1 = CYL__P(fdisk)(f->m, f->s, f->R2, t1);
     } else {
         /* D = r²A − P² = A(r² − ρ²): beside the infinite tube below −band, a miss */
-        D = CYL__LMADD(r2, f.A, -(P * P));
-        band = (CYL__L)CYL__TANG * r2 * f.A;
+        D = CYL__LMADD(r2, f->A, -(P * P));
+        band = (CYL__L)CYL__TANG * r2 * f->A;
         if (D < -band) return 0;
         tf = D <= band ? CYL_F_TANGENT : 0u;
         if (tf && (opts & CYL_NO_TANGENT)) return 0;
-        B = CYL__P(ldot)(f.m, f.s);
-        C = MM - f.R2;
-        f.sq = sq = CYL__LSQRT(f.aa * (D > 0 ? D : 0));
+        B = CYL__P(ldot)(f->m, f->s);
+        C = MM - f->R2;
+        f->sq = sq = CYL__LSQRT(f->aa * (D > 0 ? D : 0));
         q = -(B + (B < 0 ? -sq : sq));
         if (!(CYL__P(labs)(q) >= CYL__LMIN)) return -1;
-        t0 = q / f.A;
+        t0 = q / f->A;
         t1 = C / q;
         /* the roots against the slab between the cap planes, v|a| = a·w + t·a·d against
            ±H|a| (+inf for the infinite tube) */
-        v0 = CYL__LMADD(t0, f.ad, f.aw);
-        v1 = CYL__LMADD(t1, f.ad, f.aw);
+        v0 = CYL__LMADD(t0, f->ad, f->aw);
+        v1 = CYL__LMADD(t1, f->ad, f->aw);
 #if CYL__WIDE
         /* a root C/q that C's rounding could move across a rim (cnear): the fast path forms C
            from the exact o − c (out of line: a call here would cost every call its spills).
            Against tmin and tmax C/q errs by at most about 8u/sin of r/|d| (u of double), far
            inside float's t-range band, so surface origins need nothing. */
-        if (CYL__P(cnear)(t1, v1, q, 64 * (CYL__L)CYL__LU * (f.aa * ww + f.R2), f.ad, f.Hn, 0,
-                          f.tsc, tmin, tmax))
+        if (CYL__P(cnear)(t1, v1, q, 64 * (CYL__L)CYL__LU * (f->aa * ww + f->R2), f->ad, f->Hn, 0,
+                          f->tsc, tmin, tmax))
             return -1;
 #else
         /* an origin on the surface within the roundings, or a root C/q that C's rounding could
            move across a rim or an end of the t range (cnear): C from the exact o − c */
-        if (CYL__P(labs)(C) <= 64 * (CYL__L)CYL__LU * (MM + f.R2) ||
-            CYL__P(cnear)(t1, v1, q, 64 * (CYL__L)CYL__LU * (f.aa * ww + f.R2), f.ad, f.Hn, 1,
-                          f.tsc, tmin, tmax)) {
-            C = CYL__P(fc0)(ray, cyl, f.a, f.d, f.s, r, f.lf);
+        if (CYL__P(labs)(C) <= 64 * (CYL__L)CYL__LU * (MM + f->R2) ||
+            CYL__P(cnear)(t1, v1, q, 64 * (CYL__L)CYL__LU * (f->aa * ww + f->R2), f->ad, f->Hn, 1,
+                          f->tsc, tmin, tmax)) {
+            C = CYL__P(fc0)(ray, cyl, f->a, f->d, f->s, r, f->lf);
             t1 = C / q;
-            v1 = CYL__LMADD(t1, f.ad, f.aw);
+            v1 = CYL__LMADD(t1, f->ad, f->aw);
         }
 #endif
         if (t0 > t1) {
@@ -2684,8 +2673,8 @@ CYL__INL int CYL__P(qrun)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
             v0 = v1;
             v1 = x;
         }
-        sg0 = (v0 > f.Hn) - (v0 < -f.Hn);
-        sg1 = (v1 > f.Hn) - (v1 < -f.Hn);
+        sg0 = (v0 > f->Hn) - (v0 < -f->Hn);
+        sg1 = (v1 > f->Hn) - (v1 < -f->Hn);
         in0 = caps || !sg0;
         in1 = caps || !sg1;
         if (caps) {
@@ -2694,18 +2683,18 @@ CYL__INL int CYL__P(qrun)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
                the tube is met beside the solid */
             if (sg0 * sg1 > 0) return 0;
             if (sg0) {
-                t0 = ((CYL__L)sg0 * f.Hn - f.aw) / f.ad;
-                in0 = !tf || CYL__P(fdisk)(f.m, f.s, f.R2, t0);
+                t0 = ((CYL__L)sg0 * f->Hn - f->aw) / f->ad;
+                in0 = !tf || CYL__P(fdisk)(f->m, f->s, f->R2, t0);
             }
             if (sg1) {
-                t1 = ((CYL__L)sg1 * f.Hn - f.aw) / f.ad;
-                in1 = !tf || CYL__P(fdisk)(f.m, f.s, f.R2, t1);
+                t1 = ((CYL__L)sg1 * f->Hn - f->aw) / f->ad;
+                in1 = !tf || CYL__P(fdisk)(f->m, f->s, f->R2, t1);
             }
         }
     }
     /* in the caller's units (v0, v1 now); a t beyond the API type's range is a miss */
-    v0 = t0 * f.tsc;
-    v1 = t1 * f.tsc;
+    v0 = t0 * f->tsc;
+    v1 = t1 * f->tsc;
     in0 = in0 && v0 >= tmin && v0 <= tmax && CYL__P(labs)(v0) <= (CYL__L)CYL__MAXR;
     /* the second only where it is wanted */
     in1 = in1 && !(in0 && want < 2) && v1 >= tmin && v1 <= tmax &&
@@ -2714,12 +2703,12 @@ CYL__INL int CYL__P(qrun)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
     {
         int n = 0;
         if (in0) {
-            CYL__P(qhit)(ray, cyl, &f, t0, sg0, tf & (sg0 ? CYL_F_PARALLEL : ~0u), opts,
+            CYL__P(qhit)(ray, cyl, f, t0, sg0, tf & (sg0 ? CYL_F_PARALLEL : ~0u), opts,
                          &hits[0]);
             n = 1;
         }
         if (in1) {
-            CYL__P(qhit)(ray, cyl, &f, t1, sg1,
+            CYL__P(qhit)(ray, cyl, f, t1, sg1,
                          CYL_F_INSIDE | (tf & (sg1 ? CYL_F_PARALLEL : ~0u)), opts, &hits[n]);
             n++;
         }
@@ -2728,25 +2717,51 @@ CYL__INL int CYL__P(qrun)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, u
     }
 }
 
-/* The rescaled frame (rescale), out of line: only data beyond the range check come here. */
+/* The lean path's frame from the caller's data, and (scaled) rescaled by powers of two. */
+CYL__INL int CYL__P(qstart)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                           CYL__P(qf) *f, CYL__L *r, CYL__L *h, int scaled)
+{
+    *r = (CYL__L)cyl->r;
+    *h = (CYL__L)cyl->h;
+    f->tsc = f->vsc = 1;
+    f->lf[0] = f->lf[1] = 1;
+    CYL__P(frame_in)(ray, cyl, f->a, f->d, f->w);
+    return scaled ? CYL__P(rescale)(ray, cyl, f->a, f->d, f->w, r, h, f->lf, &f->tsc, &f->vsc)
+                  : 0;
+}
+
+#if CYL__WIDE
+/* The rescaled frame, out of line: only data beyond the range check come here. */
 CYL__SLOW int CYL__P(qscaled)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                               unsigned opts, int want, CYL__N(hit) *hits)
 {
-    CYL__L a[3], d[3], w[3], r = (CYL__L)cyl->r, h = (CYL__L)cyl->h, tsc = 1, vsc = 1;
-    CYL__R lf[2] = {1, 1};
-    CYL__P(frame_in)(ray, cyl, a, d, w);
-    if (CYL__P(rescale)(ray, cyl, a, d, w, &r, &h, lf, &tsc, &vsc)) return -1;
-    return CYL__P(qrun)(ray, cyl, opts, want, hits, a, d, w, r, h, tsc, vsc, lf, 1);
+    CYL__P(qf) f;
+    CYL__L r, h, dd, MM, r2, ww, P, tmin = (CYL__L)ray->tmin, tmax = (CYL__L)ray->tmax;
+    if (CYL__P(qstart)(ray, cyl, &f, &r, &h, 1)) return -1;
+    if (!CYL__P(qframe)(&f, r, h, tmin, tmax, &dd, &MM, &r2, &ww, &P)) return -1;
+    return CYL__P(qbody)(ray, cyl, opts, want, hits, &f, r, h, tmin, tmax, dd, MM, r2, ww, P, 1);
 }
+#endif
 
+/* The float API computed in double runs the lean path inline for the caller's data and out of
+   line for a rescaled frame (qscaled), so that the hot path merges no scaled value into its
+   own; the double API rescales in place (an out-of-line copy there is half its code). */
 CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                           int want, CYL__N(hit) *hits)
 {
-    const CYL__R one[2] = {1, 1};
-    CYL__L a[3], d[3], w[3];
-    CYL__P(frame_in)(ray, cyl, a, d, w);
-    return CYL__P(qrun)(ray, cyl, opts, want, hits, a, d, w, (CYL__L)cyl->r, (CYL__L)cyl->h, 1, 1,
-                        one, 0);
+    CYL__P(qf) f;
+    CYL__L r, h, dd, MM, r2, ww, P, tmin = (CYL__L)ray->tmin, tmax = (CYL__L)ray->tmax;
+    int scaled = 0;
+    (void)CYL__P(qstart)(ray, cyl, &f, &r, &h, 0);
+#if CYL__WIDE
+    if (!CYL__P(qframe)(&f, r, h, tmin, tmax, &dd, &MM, &r2, &ww, &P))
+        return CYL__P(qscaled)(ray, cyl, opts, want, hits);
+#else
+    while (!CYL__P(qframe)(&f, r, h, tmin, tmax, &dd, &MM, &r2, &ww, &P))
+        if (scaled++ || CYL__P(qstart)(ray, cyl, &f, &r, &h, 1)) return -1;
+#endif
+    return CYL__P(qbody)(ray, cyl, opts, want, hits, &f, r, h, tmin, tmax, dd, MM, r2, ww, P,
+                         scaled);
 }
 #undef CYL__QX
 #endif
