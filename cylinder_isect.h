@@ -128,10 +128,10 @@
    default path: no misclassification beyond the band in any family in either API (the target
    is the benign ones), t within 0.5 ulps on the well-conditioned hits of the benign families;
    CYL_PRECISE: none beyond the band in any family, 0.5 ulps. Cost per capped call on the
-   well-conditioned family (instructions by callgrind, time the median of 5 runs): float 386
-   instructions, 59 ns (precise 386, 58 ns; without t_err and the normal 254, 40 ns), double
-   651, 86 ns (precise 1106, 120 ns; without t_err and the normal 555, 72 ns), against 119 and
-   118 instructions, 43 and 47 ns for the end-point (pa, pb, ra) formulation fed its own input
+   well-conditioned family (instructions by callgrind, time the median of 5 runs): float 355
+   instructions, 41 ns (precise 355, 40 ns; without t_err and the normal 240, 27 ns), double
+   656, 61 ns (precise 1105, 84 ns; without t_err and the normal 547, 48 ns), against 119 and
+   118 instructions, 29 and 32 ns for the end-point (pa, pb, ra) formulation fed its own input
    form, which misclassifies 19,020 float and 14,704 double cases beyond the band. How each
    path gets there: N9; where the guarantees weaken (extreme ratios, flat disks): N11.
 
