@@ -2559,6 +2559,14 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
    range return -1 (nothing written), and the solver answers (the fast path, for CYL_PRECISE
    in the double API). The double API's crossings are corrected from double words as in the
    fast path (fref, fcapt); t_err is the residual bound at the returned t. */
+/* qhit out of line, for the rescaled frame's copy of the lean path (one copy, not two). */
+CYL__SLOW void CYL__P(qhitc)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                             const CYL__P(qf) *f, CYL__L t, int sg, unsigned flags, unsigned opts,
+                             CYL__N(hit) *o)
+{
+    CYL__P(qhit)(ray, cyl, f, t, sg, flags, opts, o);
+}
+
 /* The lean path's frame from a, d, w (in f) and r: s, m and what needs w and d, formed before
    the range check so that w and d die there. Returns the fast path's range check, which
    validates too. */
@@ -2703,13 +2711,21 @@ CYL__INL int CYL__P(qbody)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     {
         int n = 0;
         if (in0) {
-            CYL__P(qhit)(ray, cyl, f, t0, sg0, tf & (sg0 ? CYL_F_PARALLEL : ~0u), opts,
-                         &hits[0]);
+            if (CYL__WIDE && scaled)
+                CYL__P(qhitc)(ray, cyl, f, t0, sg0, tf & (sg0 ? CYL_F_PARALLEL : ~0u), opts,
+                              &hits[0]);
+            else
+                CYL__P(qhit)(ray, cyl, f, t0, sg0, tf & (sg0 ? CYL_F_PARALLEL : ~0u), opts,
+                             &hits[0]);
             n = 1;
         }
         if (in1) {
-            CYL__P(qhit)(ray, cyl, f, t1, sg1,
-                         CYL_F_INSIDE | (tf & (sg1 ? CYL_F_PARALLEL : ~0u)), opts, &hits[n]);
+            if (CYL__WIDE && scaled)
+                CYL__P(qhitc)(ray, cyl, f, t1, sg1,
+                              CYL_F_INSIDE | (tf & (sg1 ? CYL_F_PARALLEL : ~0u)), opts, &hits[n]);
+            else
+                CYL__P(qhit)(ray, cyl, f, t1, sg1,
+                             CYL_F_INSIDE | (tf & (sg1 ? CYL_F_PARALLEL : ~0u)), opts, &hits[n]);
             n++;
         }
         if (n == 2) CYL__P(order2)(hits);
