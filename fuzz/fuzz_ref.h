@@ -5,8 +5,9 @@
  * For both tiers (default and CYL_PRECISE), with the error bound on:
  *   - every library hit whose root the reference also reports (same part and crossing
  *     direction, not tangent) encloses the exact t: t - t_err <= t_exact <= t + t_err;
- *   - where the reference's decision margin is wide (FZ_REF_MARGIN below), the library makes the
- *     same decisions: hit count, part and flags of each hit.
+ *   - where the reference's decision margin is wide (FZ_REF_FACTOR below), the library makes the
+ *     same decisions: hit count, part and flags of each hit (outside the header's flat-disk
+ *     limit, fz_flat_rim).
  */
 #ifndef FUZZ_REF_H
 #define FUZZ_REF_H
@@ -17,6 +18,19 @@
  * library's own rounding: u times the problem's size relative to r (the default path rounds
  * o - c, so an origin at |w| from the axis moves e by about u |w|/r), times a safety factor. */
 #define FZ_REF_FACTOR 0x1p12L
+
+/* The header's flat-disk limit (N11): for an origin on the wall of a disk far wider than high
+ * and a ray nearly parallel to the axis, the crossing near t = 0 is decided against the rim
+ * with an error of about X = r/(h sin) times the solver's double words (2^-106; 2^-46 in a
+ * float-only build), times up to 2^10, relative to the rim margin. A margin within that
+ * (times 16) is not one the library promises to decide. */
+static int fz_flat_rim(const fz_prob *p, const fz_geo *g, fz_real margin, int float_only)
+{
+  fz_real rho0 = fz_norm(g->axw), dw = float_only ? 0x1p-46L : 0x1p-106L;
+  if (!(g->sin_th > 0) || !isfinite(g->H) || !(g->H > 0)) return 0;
+  if (!(fabsl(rho0 - p->r) <= 0x1p-8L * p->r)) return 0; /* the origin on the wall */
+  return margin <= 0x1p14L * dw * (p->r / (2 * g->H * g->sin_th));
+}
 
 static unsigned long fz_ref_decisions;
 
@@ -49,6 +63,7 @@ static unsigned long fz_ref_decisions;
     if (!g.ok) return;                                                                         \
     thr = FZ_REF_FACTOR * u * (1 + fz_abssum(g.w) / p.r);                                      \
     if (!((fz_real)rr.margin > thr)) return;                                                   \
+    if (fz_flat_rim(&p, &g, (fz_real)rr.margin, (PREC) == 24 && !CYL_FLOAT_WIDE)) return;      \
     /* ref/cyl_ref.c decides the caps of a ray flagged parallel but not exactly parallel by the \
      * distance between the two lines (which meet far away), not by the crossing points: its  \
      * decisions are not used there (reported to the reference's owner) */                    \
