@@ -1709,12 +1709,12 @@ CYL__SLOW CYL__L CYL__P(fc0)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
    moves it by up to eC/|q|, which for an origin near the wall grows like 1/sin of the angle to the axis: a
    ray nearly parallel to it. At a rim that error is also multiplied by
    r/h, so even C's rounding in double can decide a float rim there. Compared without a
-   division; eC comes with a factor 4 for the roundings of the test; infinite ends never
+   division against e = 4·|δC| (the 4 for the roundings of the test); infinite ends never
    qualify. */
-CYL__INL int CYL__P(cnear)(CYL__L t, CYL__L v, CYL__L q, CYL__L eC, CYL__L ad, CYL__L Hn,
+CYL__INL int CYL__P(cnear)(CYL__L t, CYL__L v, CYL__L q, CYL__L e, CYL__L ad, CYL__L Hn,
                           int ends, CYL__L tsc, CYL__L tmin, CYL__L tmax)
 {
-    CYL__L aq = CYL__P(labs)(q), e = eC, tu = t * tsc;
+    CYL__L aq = CYL__P(labs)(q), tu = t * tsc;
     return CYL__P(labs)(CYL__P(labs)(v) - Hn) * aq <= e * CYL__P(labs)(ad) ||
            (ends && (CYL__P(labs)(tu - tmin) * aq <= e * tsc ||
                      CYL__P(labs)(tu - tmax) * aq <= e * tsc));
@@ -2567,6 +2567,17 @@ CYL__SLOW void CYL__P(qhitc)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
     CYL__P(qhit)(ray, cyl, f, t, sg, flags, opts, o);
 }
 
+/* One hit of the lean path: inline, or out of line in the float API's rescaled copy. */
+CYL__INL void CYL__P(qemit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                           const CYL__P(qf) *f, CYL__L t, int sg, unsigned flags, unsigned opts,
+                           int scaled, CYL__N(hit) *o)
+{
+    if (CYL__WIDE && scaled)
+        CYL__P(qhitc)(ray, cyl, f, t, sg, flags, opts, o);
+    else
+        CYL__P(qhit)(ray, cyl, f, t, sg, flags, opts, o);
+}
+
 /* The lean path's frame from a, d, w (in f) and r: s, m and what needs w and d, formed before
    the range check so that w and d die there. Returns the fast path's range check, which
    validates too. */
@@ -2711,21 +2722,13 @@ CYL__INL int CYL__P(qbody)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     {
         int n = 0;
         if (in0) {
-            if (CYL__WIDE && scaled)
-                CYL__P(qhitc)(ray, cyl, f, t0, sg0, tf & (sg0 ? CYL_F_PARALLEL : ~0u), opts,
-                              &hits[0]);
-            else
-                CYL__P(qhit)(ray, cyl, f, t0, sg0, tf & (sg0 ? CYL_F_PARALLEL : ~0u), opts,
-                             &hits[0]);
+            CYL__P(qemit)(ray, cyl, f, t0, sg0, tf & (sg0 ? CYL_F_PARALLEL : ~0u), opts, scaled,
+                          &hits[0]);
             n = 1;
         }
         if (in1) {
-            if (CYL__WIDE && scaled)
-                CYL__P(qhitc)(ray, cyl, f, t1, sg1,
-                              CYL_F_INSIDE | (tf & (sg1 ? CYL_F_PARALLEL : ~0u)), opts, &hits[n]);
-            else
-                CYL__P(qhit)(ray, cyl, f, t1, sg1,
-                             CYL_F_INSIDE | (tf & (sg1 ? CYL_F_PARALLEL : ~0u)), opts, &hits[n]);
+            CYL__P(qemit)(ray, cyl, f, t1, sg1, CYL_F_INSIDE | (tf & (sg1 ? CYL_F_PARALLEL : ~0u)),
+                          opts, scaled, &hits[n]);
             n++;
         }
         if (n == 2) CYL__P(order2)(hits);
@@ -2733,17 +2736,15 @@ CYL__INL int CYL__P(qbody)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     }
 }
 
-/* The lean path's frame from the caller's data, and (scaled) rescaled by powers of two. */
-CYL__INL int CYL__P(qstart)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
-                           CYL__P(qf) *f, CYL__L *r, CYL__L *h, int scaled)
+/* The lean path's frame from the caller's data, unscaled (rescale starts from it). */
+CYL__INL void CYL__P(qstart)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                            CYL__P(qf) *f, CYL__L *r, CYL__L *h)
 {
     *r = (CYL__L)cyl->r;
     *h = (CYL__L)cyl->h;
     f->tsc = f->vsc = 1;
     f->lf[0] = f->lf[1] = 1;
     CYL__P(frame_in)(ray, cyl, f->a, f->d, f->w);
-    return scaled ? CYL__P(rescale)(ray, cyl, f->a, f->d, f->w, r, h, f->lf, &f->tsc, &f->vsc)
-                  : 0;
 }
 
 #if CYL__WIDE
@@ -2753,7 +2754,8 @@ CYL__SLOW int CYL__P(qscaled)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cy
 {
     CYL__P(qf) f;
     CYL__L r, h, dd, MM, r2, ww, P, tmin = (CYL__L)ray->tmin, tmax = (CYL__L)ray->tmax;
-    if (CYL__P(qstart)(ray, cyl, &f, &r, &h, 1)) return -1;
+    CYL__P(qstart)(ray, cyl, &f, &r, &h);
+    if (CYL__P(rescale)(ray, cyl, f.a, f.d, f.w, &r, &h, f.lf, &f.tsc, &f.vsc)) return -1;
     if (!CYL__P(qframe)(&f, r, h, tmin, tmax, &dd, &MM, &r2, &ww, &P)) return -1;
     return CYL__P(qbody)(ray, cyl, opts, want, hits, &f, r, h, tmin, tmax, dd, MM, r2, ww, P, 1);
 }
@@ -2768,13 +2770,14 @@ CYL__INL int CYL__P(quick)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     CYL__P(qf) f;
     CYL__L r, h, dd, MM, r2, ww, P, tmin = (CYL__L)ray->tmin, tmax = (CYL__L)ray->tmax;
     int scaled = 0;
-    (void)CYL__P(qstart)(ray, cyl, &f, &r, &h, 0);
+    CYL__P(qstart)(ray, cyl, &f, &r, &h);
 #if CYL__WIDE
     if (!CYL__P(qframe)(&f, r, h, tmin, tmax, &dd, &MM, &r2, &ww, &P))
         return CYL__P(qscaled)(ray, cyl, opts, want, hits);
 #else
     while (!CYL__P(qframe)(&f, r, h, tmin, tmax, &dd, &MM, &r2, &ww, &P))
-        if (scaled++ || CYL__P(qstart)(ray, cyl, &f, &r, &h, 1)) return -1;
+        if (scaled++ || CYL__P(rescale)(ray, cyl, f.a, f.d, f.w, &r, &h, f.lf, &f.tsc, &f.vsc))
+            return -1;
 #endif
     return CYL__P(qbody)(ray, cyl, opts, want, hits, &f, r, h, tmin, tmax, dd, MM, r2, ww, P,
                          scaled);
