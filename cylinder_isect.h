@@ -2501,10 +2501,16 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                 yn[2] = y[2] * k;
                 Ya = CYL__P(ldot)(yn, yn) * f->aa;
             }
-            sc = 1 / CYL__LSQRT(Ya);
-            nl[0] = CYL__LMADD(yn[1], f->a[2], -(yn[2] * f->a[1])) * sc;
-            nl[1] = CYL__LMADD(yn[2], f->a[0], -(yn[0] * f->a[2])) * sc;
-            nl[2] = CYL__LMADD(yn[0], f->a[1], -(yn[1] * f->a[0])) * sc;
+            nl[0] = CYL__LMADD(yn[1], f->a[2], -(yn[2] * f->a[1]));
+            nl[1] = CYL__LMADD(yn[2], f->a[0], -(yn[0] * f->a[2]));
+            nl[2] = CYL__LMADD(yn[0], f->a[1], -(yn[1] * f->a[0]));
+            /* the double API divides by |y × a| itself: y = m + t·s cancels by up to |o − c|/r
+               (2^30), which tilts it off ⊥ a by as much times u, and |y||a| then exceeds
+               |y × a| by that squared (64 ulps); in the float API it stays below 2^-47 */
+            sc = 1 / CYL__LSQRT(CYL__WIDE ? Ya : CYL__P(ldot)(nl, nl));
+            nl[0] *= sc;
+            nl[1] *= sc;
+            nl[2] *= sc;
             face = G > 0 ? -1 : 1;
         }
         /* v within ±h/2 up to rounding: reported within; an infinite tube's saturates */
