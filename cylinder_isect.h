@@ -2499,7 +2499,7 @@ CYL__INL void CYL__P(qhit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                 yn[0] = y[0] * k;
                 yn[1] = y[1] * k;
                 yn[2] = y[2] * k;
-                Ya = CYL__P(ldot)(yn, yn) * f->aa;
+                if (CYL__WIDE) Ya = CYL__P(ldot)(yn, yn) * f->aa; /* the double API: |y × a| */
             }
             nl[0] = CYL__LMADD(yn[1], f->a[2], -(yn[2] * f->a[1]));
             nl[1] = CYL__LMADD(yn[2], f->a[0], -(yn[0] * f->a[2]));
