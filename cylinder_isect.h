@@ -1720,6 +1720,19 @@ CYL__INL int CYL__P(cnear)(CYL__L t, CYL__L v, CYL__L q, CYL__L e, CYL__L ad, CY
                      CYL__P(labs)(tu - tmax) * aq <= e * tsc));
 }
 
+/* The root pair's q = −(B + sgn(B)·sq), sq = √(|a|²D) = √(B² − AC) (N4). */
+CYL__INL CYL__L CYL__P(qpair)(CYL__L B, CYL__L sq) { return -(B + (B < 0 ? -sq : sq)); }
+
+/* sq for an origin on the surface (|C| <= 128u·r²|a|², C from the exact o − c): √(B² − AC)
+   errs there by about u|B||a||w||s|, √(|a|²D) by u·r²|a|²A, more by r|a||s|/|B| = 1/√e near
+   tangency (N3). */
+CYL__INL int CYL__P(onsurf)(CYL__L C, CYL__L R2) { return CYL__P(labs)(C) <= 128 * CYL__LU * R2; }
+CYL__INL CYL__L CYL__P(sqbc)(CYL__L B, CYL__L A, CYL__L C)
+{
+    CYL__L x = CYL__LMADD(B, B, -(A * C));
+    return CYL__LSQRT(x > 0 ? x : 0);
+}
+
 /* Componentwise bounds on the errors of s = a × d (es) and m = a × w (em, with the rounding
    of o − c), from the largest components of a, d, s (returned too) and w. */
 CYL__INL void CYL__P(ferr)(const CYL__L a[3], const CYL__L d[3], const CYL__L s[3], CYL__L mw,
@@ -2092,7 +2105,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                 Dp = D > 0 ? D : 0;
                 sq = CYL__LSQRT(aa * Dp);
                 noroots = comp && !(sq > 0);
-                q = -(B + (B < 0 ? -sq : sq));
+                q = CYL__P(qpair)(B, sq);
                 if (!(CYL__P(labs)(q) >= tiny)) return -1; /* a contact where B = D = 0 */
                 ta = q / A;
                 tb = C / q;
@@ -2110,6 +2123,12 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                        always, unless there are no roots */
                     C = CYL__P(fc0)(ray, cyl, a, d, s, r, lf);
                     cx = 1;
+                    Dp = CYL__P(sqbc)(B, A, C); /* √(B² − AC), kept where on the surface */
+                    if (!ce && CYL__P(onsurf)(C, R2) && CYL__P(labs)(CYL__P(qpair)(B, Dp)) >= tiny) {
+                        sq = Dp;
+                        q = CYL__P(qpair)(B, sq);
+                        ta = q / A;
+                    }
                     tb = C / q;
                 }
                 /* a contact without roots (CYL_PRECISE near the band, D < 0): both ends at the
@@ -2663,7 +2682,7 @@ CYL__INL int CYL__P(qbody)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         B = CYL__P(ldot)(f->m, f->s);
         C = MM - f->R2;
         f->sq = sq = CYL__LSQRT(f->aa * (D > 0 ? D : 0));
-        q = -(B + (B < 0 ? -sq : sq));
+        q = CYL__P(qpair)(B, sq);
         if (!(CYL__P(labs)(q) >= CYL__LMIN)) return -1;
         t0 = q / f->A;
         t1 = C / q;
@@ -2686,6 +2705,13 @@ CYL__INL int CYL__P(qbody)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
             CYL__P(cnear)(t1, v1, q, 64 * (CYL__L)CYL__LU * (f->aa * ww + f->R2), f->ad, f->Hn, 1,
                           f->tsc, tmin, tmax)) {
             C = CYL__P(fc0)(ray, cyl, f->a, f->d, f->s, r, f->lf);
+            D = CYL__P(sqbc)(B, f->A, C); /* √(B² − AC), kept where on the surface */
+            if (CYL__P(onsurf)(C, f->R2) && CYL__P(labs)(CYL__P(qpair)(B, D)) >= CYL__LMIN) {
+                f->sq = sq = D;
+                q = CYL__P(qpair)(B, sq);
+                t0 = q / f->A;
+                v0 = CYL__LMADD(t0, f->ad, f->aw);
+            }
             t1 = C / q;
             v1 = CYL__LMADD(t1, f->ad, f->aw);
         }

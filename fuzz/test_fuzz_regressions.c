@@ -619,6 +619,27 @@ static void test_double_near_parallel_default_rim(void)
   }
 }
 
+/* Finding 41 (fixed by the commit that added it; grid corpus:
+ * fuzz/corpus_grid/finding-double-rim-near-tangent-origin-on-wall; fuzz_grid, session 13, on
+ * 45b19e5; v1.0 fails too). Double, default tier, FMA build: a disk of r = 2^27·1.9 and h = 1,
+ * the origin on its wall within the roundings, a ray nearly tangent (e = 2e-12, 70 times the
+ * band) whose crossing near t = 0 lies 1.8e-6 h/2 beyond the rim. √(|a|²D) erred by u/e of
+ * itself, which moved that crossing by 5e-5 h/2 to inside the rim: one hit where there is
+ * none. For an origin on the surface the roots now take √(B² − AC) with C from the exact
+ * o − c, which errs by about u/√e. */
+static void test_double_surface_origin_near_tangent_rim(void)
+{
+  cyld_ray ray = {{0x1.e8p+27, 0x1.e8p-49, 0}, {0x1p-1, 0x1.1p+51, 0x1.8p+42}, -0x1.dp-34, 0x1.38p+6};
+  cyld_cylinder cyl = {{0, 0, 0}, {1, 0x1.e8p+27, 0x1.e8p-43}, 0x1.e8p+27, 1};
+  const unsigned opts[] = {0u, CYL_NO_ERRBOUND | CYL_NO_NORMAL, CYL_OUTWARD | CYL_TRUSTED, CYL_PRECISE};
+  size_t i;
+  for (i = 0; i < sizeof opts / sizeof opts[0]; i++) {
+    cyld_hit h[2];
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, cyld_intersect_all(&ray, &cyl, opts[i], h), "intersect_all");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, cyld_occluded(&ray, &cyl, opts[i]), "occluded");
+  }
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -664,5 +685,6 @@ int main(void)
   RUN_TEST(test_double_cap_plane_parallel_nan);
   RUN_TEST(test_double_tangent_far_root_zero_normal);
   RUN_TEST(test_double_near_parallel_default_rim);
+  RUN_TEST(test_double_surface_origin_near_tangent_rim);
   return UNITY_END();
 }
