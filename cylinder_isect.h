@@ -2059,7 +2059,7 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     c[0].resid = c[1].resid = 0;
     c[0].t = c[1].t = c[0].et = c[1].et = 0;
     if (!parallel) {
-        CYL__L ta, tb, B, C, Dp, q, tw[2];
+        CYL__L ta, tb, B, C, Dp, q, sb, tw[2];
         CYL__L Bc = 0, eBc = 0; /* B from double words (comp) and its bound */
         int swap, cx = 0;       /* cx: C from the exact o − c */
         if (ce) {
@@ -2123,9 +2123,9 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                        always, unless there are no roots */
                     C = CYL__P(fc0)(ray, cyl, a, d, s, r, lf);
                     cx = 1;
-                    Dp = CYL__P(sqbc)(B, A, C); /* √(B² − AC), kept where on the surface */
-                    if (!ce && CYL__P(onsurf)(C, R2) && CYL__P(labs)(CYL__P(qpair)(B, Dp)) >= tiny) {
-                        sq = Dp;
+                    sb = CYL__P(sqbc)(B, A, C); /* √(B² − AC), kept where on the surface */
+                    if (!ce && CYL__P(onsurf)(C, R2) && CYL__P(labs)(CYL__P(qpair)(B, sb)) >= tiny) {
+                        sq = sb;
                         q = CYL__P(qpair)(B, sq);
                         ta = q / A;
                     }
