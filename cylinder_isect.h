@@ -197,6 +197,15 @@
 #else
 #define CYL__FAST CYL__INL
 #endif
+/* The parts of one long function, split for reading: each has one caller, into which it is
+   inlined, also under -Os. */
+#if defined(CYL_INTERNAL)
+#define CYL__PART CYL_INTERNAL
+#elif defined(__GNUC__) || defined(__clang__)
+#define CYL__PART static inline __attribute__((always_inline))
+#else
+#define CYL__PART static inline
+#endif
 #ifndef CYL_HEADER_FILENAME
 #define CYL_HEADER_FILENAME "cylinder_isect.h"
 #endif
@@ -1945,29 +1954,39 @@ CYL__INL int CYL__P(fsteps)(CYL__L e, CYL__L at, CYL__L sq, CYL__L esq, CYL__L m
     return n;
 }
 
-/* want: 0 occluded (returns 1 or 0), 1 the nearest hit into hits[0], 2 every hit.
-   Returns -1 (nothing written) when the solver must answer. */
-#if CYL__QUICK && CYL__WIDE
-#define CYL__FASTQ CYL__SLOW /* only behind the lean path's hand-over: out of line */
-#else
-#define CYL__FASTQ CYL__FAST
-#endif
-CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
-                          int want, CYL__N(hit) *hits)
+/* The fast path's frame (fast and its parts): its scalars and decisions. a, d, s, m and lf
+   stay arrays of fast itself: an out-of-line call takes some of them, which would keep a
+   whole struct in memory. */
+typedef struct CYL__P(fs) {
+    CYL__L r, H, aa, dd, A, MM, R2, r2, sq, aw, ad, na, Hn, tsc, vsc, P, D, band;
+    CYL__L eD, esq; /* CYL_PRECISE: the bounds on D's and √(|a|²D)'s errors */
+    CYL__L mw, ma, md, ms, es, em, eA, eaw, ead, eHn;
+    int caps, hfin, ce, parallel, tangent;
+    int comp;    /* CYL_PRECISE near the tangent band: A, B, C, D from double words */
+    int noroots; /* ... and a contact without roots there (D < 0): both ends at −B/A */
+} CYL__P(fs);
+
+/* The fast path's frame from the caller's data, rescaled where out of range; the hand-over of
+   far origins; the parallel test; a miss beside the tube. Returns -1 (the solver answers),
+   0 (a miss) or 1. */
+CYL__PART int CYL__P(fframe)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                            CYL__P(fs) *F, CYL__L a[3], CYL__L d[3], CYL__L s[3], CYL__L m[3],
+                            CYL__R lf[2])
 {
     const CYL__L u = CYL__LU, sf = (CYL__L)1 + (CYL__L)1 / 64, tiny = CYL__LMIN;
     const CYL__L hi = CYL__LHI, lo = 1 / CYL__LHI;
-    CYL__L a[3], d[3], w[3], s[3], m[3], r, H, aa, dd, A, MM, R2, sq = 0;
-    CYL__L aw, ad, na, Hn, tsc = 1, vsc = 1, thr, r2, P = 0, D = 0, band = 0;
-    CYL__L eD = 0, esq = 0; /* CYL_PRECISE: the bounds on D's and √(|a|²D)'s errors */
-    CYL__L mw, ma = 0, md = 0, ms = 0, es = 0, em = 0, eA = 0, eaw = 0, ead = 0, eHn = 0;
-    CYL__R lf[2] = {1, 1}; /* the frame's length scale, as two factors */
-    CYL__P(fx) c[2];
-    int i, k, caps = (opts & CYL_CAPS) != 0, hfin = cyl->h <= CYL__MAXR, tangent = 0;
-    int parallel, scaled = 0, ce = (opts & CYL_PRECISE) != 0;
-    int comp = 0;    /* CYL_PRECISE near the tangent band: A, B, C, D from double words */
-    int noroots = 0; /* ... and a contact without roots there (D < 0): both ends at −B/A */
+    CYL__L w[3], r, H, tsc = 1, vsc = 1, thr;
+    int scaled = 0, ce = (opts & CYL_PRECISE) != 0;
 
+    F->caps = (opts & CYL_CAPS) != 0;
+    F->hfin = cyl->h <= CYL__MAXR;
+    F->ce = ce;
+    F->parallel = F->tangent = F->comp = F->noroots = 0;
+    /* every field set before any use (the compiler cannot always tell) */
+    F->r = F->H = F->aa = F->dd = F->A = F->MM = F->R2 = F->r2 = F->sq = F->aw = F->ad = 0;
+    F->na = F->Hn = F->P = F->D = F->band = F->eD = F->esq = F->mw = 0;
+    F->ma = F->md = F->ms = F->es = F->em = F->eA = F->eaw = F->ead = F->eHn = 0;
+    F->tsc = F->vsc = 1;
     /* the scaling on a copy (rescale): an address here keeps a, d and w in memory on the
        whole path */
     CYL__P(frame_in)(ray, cyl, a, d, w);
@@ -1983,19 +2002,23 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         m[0] = CYL__P(ldop)(a[1], w[2], a[2], w[1]);
         m[1] = CYL__P(ldop)(a[2], w[0], a[0], w[2]);
         m[2] = CYL__P(ldop)(a[0], w[1], a[1], w[0]);
-        aa = CYL__P(ldot)(a, a);
-        dd = CYL__P(ldot)(d, d);
-        MM = CYL__P(ldot)(m, m);
-        R2 = r * r * aa;
+        F->aa = CYL__P(ldot)(a, a);
+        F->dd = CYL__P(ldot)(d, d);
+        F->MM = CYL__P(ldot)(m, m);
+        F->R2 = r * r * F->aa;
         /* The range check is the validation too: NaN, infinities, zero vectors and r, h <= 0
            fail it. Inside it no quantity below overflows, and none that decides or bounds
            anything underflows: they are products of |a|², |d|² and |m|² + r²|a|² (r²|s|² <=
            r²|a|²·|d|², so |a|² and |d|² are bounded each, not only their product) */
-        if (aa >= 1 / CYL__LDIR && aa <= CYL__LDIR && dd >= 1 / CYL__LDIR && dd <= CYL__LDIR &&
-            MM + R2 <= hi && R2 >= lo && r > 0 && cyl->h > 0 && ray->tmin <= ray->tmax)
+        if (F->aa >= 1 / CYL__LDIR && F->aa <= CYL__LDIR && F->dd >= 1 / CYL__LDIR &&
+            F->dd <= CYL__LDIR && F->MM + F->R2 <= hi && F->R2 >= lo && r > 0 && cyl->h > 0 &&
+            ray->tmin <= ray->tmax)
             break;
         if (scaled++ || CYL__P(rescale)(ray, cyl, a, d, w, &r, &H, lf, &tsc, &vsc)) return -1;
     }
+    F->r = r;
+    F->tsc = tsc;
+    F->vsc = vsc;
     {
         /* Hand over what the plain roundings cannot resolve: o − c beyond 2^30 (double) or
            2^12 (float) radii or half heights, where its rounding alone is 2^-23 (2^-12) of e or
@@ -2006,418 +2029,530 @@ CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         const CYL__L far = CYL__LD ? (CYL__WIDE && ce ? (CYL__L)1099511627776.0 /* 2^40 */
                                                       : (CYL__L)1073741824.0)  /* 2^30 */
                                    : (CYL__L)4096.0;
-        CYL__L hh = H;
-        mw = CYL__P(lmax3)(w);
-        H = hh * (CYL__L)0.5;
-        if (!(mw <= far * r) || (hfin && !(mw <= far * H))) return -1;
-        if (hfin && (H + H < hh || H + H > hh)) return -1;
+        F->mw = CYL__P(lmax3)(w);
+        F->H = H * (CYL__L)0.5;
+        if (!(F->mw <= far * r) || (F->hfin && !(F->mw <= far * F->H))) return -1;
+        if (F->hfin && (F->H + F->H < H || F->H + F->H > H)) return -1;
     }
-    A = CYL__P(ldot)(s, s);
+    F->A = CYL__P(ldot)(s, s);
     /* sin²(angle) = A / (|a|²|d|²) against the parallel tolerance */
-    thr = (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * aa * dd;
-    parallel = A <= thr;
+    thr = (CYL__L)CYL__PARA * (CYL__L)CYL__PARA * F->aa * F->dd;
+    F->parallel = F->A <= thr;
     if (ce) {
         /* CYL_PRECISE in the API's own type: every decision below is taken only where the
            computed value is farther from its threshold than an a-priori bound on its error
            (standard model; first order, sf covers the rest), else the solver answers. The
            bounds: componentwise on s, m (with the rounding of o − c), then A, P, D, B, C, the
            roots, a·w, a·d, H|a|. */
-        CYL__P(ferr)(a, d, s, mw, &ma, &md, &ms, &es, &em);
-        eA = 3 * u * A + es * (6 * ms + 3 * es) + tiny;
+        CYL__P(ferr)(a, d, s, F->mw, &F->ma, &F->md, &F->ms, &F->es, &F->em);
+        F->eA = 3 * u * F->A + F->es * (6 * F->ms + 3 * F->es) + tiny;
         /* parallel rays go to the solver (|sin| <= u: rare in double) */
-        if (!(A - eA > thr * (1 + 8 * u)) || !(eA < A * (CYL__L)0.25)) return -1;
+        if (!(F->A - F->eA > thr * (1 + 8 * u)) || !(F->eA < F->A * (CYL__L)0.25)) return -1;
     }
-    r2 = r * r;
-    if (!parallel) {
+    F->r2 = r * r;
+    if (!F->parallel) {
         /* D = r²A − P² = A(r² − ρ²), P = w·s: the wall is crossed iff D >= 0; a ray beside
            the infinite tube (certainly so, for CYL_PRECISE) misses before anything else is
            formed */
-        P = CYL__P(ldot)(w, s);
-        D = CYL__LMADD(r2, A, -(P * P));
-        band = (CYL__L)CYL__TANG * r2 * A;
+        F->P = CYL__P(ldot)(w, s);
+        F->D = CYL__LMADD(F->r2, F->A, -(F->P * F->P));
+        F->band = (CYL__L)CYL__TANG * F->r2 * F->A;
         if (ce) {
-            CYL__L eP = 3 * mw * (4 * u * ms + (1 + u) * es) + tiny;
-            eD = (r2 * (3 * u * A + eA) + (3 * u * CYL__P(labs)(P) + 2 * eP) *
-                  (CYL__P(labs)(P) + eP) + u * CYL__P(labs)(D)) * sf + tiny;
+            CYL__L aP = CYL__P(labs)(F->P), eP = 3 * F->mw * (4 * u * F->ms + (1 + u) * F->es) + tiny;
+            F->eD = (F->r2 * (3 * u * F->A + F->eA) + (3 * u * aP + 2 * eP) * (aP + eP) +
+                     u * CYL__P(labs)(F->D)) * sf + tiny;
         }
         /* the plain test first (it resolves as soon as D does), then its certification (in
            CYL_PRECISE; nearly always true, so well predicted) */
-        if (D < -band && D < -band - eD) return 0;
+        if (F->D < -F->band && F->D < -F->band - F->eD) return 0;
     }
-    aw = CYL__P(ldot)(a, w);
-    ad = CYL__P(ldot)(a, d);
-    na = CYL__LSQRT(aa);
-    Hn = hfin ? H * na : 0;
+    F->aw = CYL__P(ldot)(a, w);
+    F->ad = CYL__P(ldot)(a, d);
+    F->na = CYL__LSQRT(F->aa);
+    F->Hn = F->hfin ? F->H * F->na : 0;
     if (ce) {
-        eaw = 12 * u * ma * mw + tiny;
-        ead = 9 * u * ma * md + tiny;
-        eHn = 4 * u * Hn + tiny;
+        F->eaw = 12 * u * F->ma * F->mw + tiny;
+        F->ead = 9 * u * F->ma * F->md + tiny;
+        F->eHn = 4 * u * F->Hn + tiny;
     }
-    c[0].ok = c[1].ok = 0;
-    c[0].sg = c[1].sg = 0;
-    c[0].steps = c[1].steps = 1;
-    c[0].resid = c[1].resid = 0;
-    c[0].t = c[1].t = c[0].et = c[1].et = 0;
-    if (!parallel) {
-        CYL__L ta, tb, B, C, Dp, q, sb, tw[2];
-        CYL__L Bc = 0, eBc = 0; /* B from double words (comp) and its bound */
-        int swap, cx = 0;       /* cx: C from the exact o − c */
-        if (ce) {
-            /* certified: beside (above), or clearly crossed. Near the tangent band (either side
-               of it) the plain D errs by about the band's width: A, B and D again from double
-               words (fcomp; C from the exact o − c, fc0, below), and a contact certainly inside
-               the band is answered here too (N9); what fcomp cannot
-               decide goes to the solver. */
-            if (!(D > band + eD)) {
+    return 1;
+}
+
+/* CYL_PRECISE near the tangent band (either side of it), where the plain D errs by about the
+   band's width: A, B and D again from double words (fcomp; C from the exact o − c, fc0, in
+   froots), and a contact certainly inside the band is answered here too (N9); what fcomp
+   cannot decide goes to the solver (-1). B and its bound in Bc[2]. */
+CYL__PART int CYL__P(fnear)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, CYL__P(fs) *F,
+                           const CYL__L a[3], const CYL__L d[3], const CYL__R lf[2], CYL__L Bc[2])
+{
 #if !CYL__WIDE
-                /* fcomp is out of line: its inputs as copies, so that a and d themselves need
-                   no address (see rescale) */
-                CYL__L cv[3], cerr[3], ac[3], dc[3];
-                CYL__R lc[2];
-                ac[0] = a[0];
-                ac[1] = a[1];
-                ac[2] = a[2];
-                dc[0] = d[0];
-                dc[1] = d[1];
-                dc[2] = d[2];
-                lc[0] = lf[0];
-                lc[1] = lf[1];
-                if (!CYL__P(fcomp)(ray, cyl, ac, dc, r, lc, mw, ma, md, band, cv, cerr))
-                    return -1;
-                A = cv[0];
-                eA = cerr[0];
-                Bc = cv[1];
-                eBc = cerr[1];
-                D = cv[2];
-                eD = cerr[2];
-                comp = 1;
+    /* fcomp is out of line: its inputs as copies, so that a and d themselves need no address
+       (see rescale) */
+    CYL__L cv[3], cerr[3], ac[3], dc[3];
+    CYL__R lc[2];
+    ac[0] = a[0];
+    ac[1] = a[1];
+    ac[2] = a[2];
+    dc[0] = d[0];
+    dc[1] = d[1];
+    dc[2] = d[2];
+    lc[0] = lf[0];
+    lc[1] = lf[1];
+    if (!CYL__P(fcomp)(ray, cyl, ac, dc, F->r, lc, F->mw, F->ma, F->md, F->band, cv, cerr))
+        return -1;
+    F->A = cv[0];
+    F->eA = cerr[0];
+    Bc[0] = cv[1];
+    Bc[1] = cerr[1];
+    F->D = cv[2];
+    F->eD = cerr[2];
+    F->comp = 1;
+    return 0;
 #else
+    (void)ray;
+    (void)cyl;
+    (void)F;
+    (void)a;
+    (void)d;
+    (void)lf;
+    (void)Bc;
+    return -1;
+#endif
+}
+
+/* The wall's two roots of A t² + 2B t + C (B = m·s, C = |m|² − r²|a|², B² − AC = |a|²D) into
+   tw[0] <= tw[1], with their bounds in c (CYL_PRECISE); Bc: B from double words and its
+   bound (comp). Returns -1 where the solver must answer, else 0. */
+CYL__PART int CYL__P(froots)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, CYL__P(fs) *F,
+                            const CYL__L a[3], const CYL__L d[3], const CYL__L s[3],
+                            const CYL__L m[3], const CYL__R lf[2], const CYL__L Bc[2],
+                            CYL__P(fx) c[2], CYL__L tw[2])
+{
+    const CYL__L u = CYL__LU, sf = (CYL__L)1 + (CYL__L)1 / 64, tiny = CYL__LMIN;
+    CYL__L ta, tb, B, C, Dp, q, sq, sb;
+    int swap, cx = 0, comp = F->comp, ce = F->ce; /* cx: C from the exact o − c */
+    B = comp ? Bc[0] : CYL__P(ldot)(m, s);
+    C = F->MM - F->R2;
+    Dp = F->D > 0 ? F->D : 0;
+    sq = CYL__LSQRT(F->aa * Dp);
+    F->noroots = comp && !(sq > 0);
+    q = CYL__P(qpair)(B, sq);
+    if (!(CYL__P(labs)(q) >= tiny)) return -1; /* a contact where B = D = 0 */
+    ta = q / F->A;
+    tb = C / q;
+    if (comp ? !F->noroots
+             : (CYL__P(labs)(C) <= 64 * u * (F->MM + F->R2) ||
+                CYL__P(cnear)(tb, CYL__LMADD(tb, F->ad, F->aw), q,
+                              64 * u * (3 * F->aa * F->mw * F->mw + F->R2), F->ad,
+                              F->hfin ? F->Hn : (CYL__L)CYL__LMAX * 2, 1, F->tsc,
+                              (CYL__L)ray->tmin, (CYL__L)ray->tmax))) {
+        /* an origin on the surface within the roundings (a secondary ray), or a root C/q that
+           C's rounding could move across a rim or an end of the t range: C from the exact
+           o − c (fc0), so that the crossing near t = 0 is known to about u of itself for the
+           rim and, in CYL_PRECISE, against tmin = 0 without the solver; near the tangent band
+           in CYL_PRECISE (comp) always, unless there are no roots */
+        C = CYL__P(fc0)(ray, cyl, a, d, s, F->r, lf);
+        cx = 1;
+        sb = CYL__P(sqbc)(B, F->A, C); /* √(B² − AC), kept where on the surface */
+        if (!ce && CYL__P(onsurf)(C, F->R2) && CYL__P(labs)(CYL__P(qpair)(B, sb)) >= tiny) {
+            sq = sb;
+            q = CYL__P(qpair)(B, sq);
+            ta = q / F->A;
+        }
+        tb = C / q;
+    }
+    F->sq = sq;
+    /* a contact without roots (CYL_PRECISE near the band, D < 0): both ends at the point of
+       closest approach −B/A, as the solver gives it */
+    if (F->noroots) tb = ta;
+    swap = ta > tb;
+    tw[0] = swap ? tb : ta;
+    tw[1] = swap ? ta : tb;
+    if (ce) {
+        /* the roots' bounds: q' = −(B + sgn(B̂)√(|a|²D)) exact, |q − q'| <= eq, t = q/A or C/q
+           (1/(x(1 − ε)) <= (1 + 2ε)/x for ε <= 1/4) */
+        const CYL__L ma = F->ma, mw = F->mw;
+        CYL__L eB, eC, aq = CYL__P(labs)(q), rq, rA = F->eA / F->A, g, e0, e1, iq;
+        eB = comp ? Bc[1] : 6 * ma * mw * (6 * u * F->ms + 2 * F->es) + tiny;
+        /* C from fres carries u of itself and u² of |m|², r²|a|² and |a|²|o − c|² (<= 9 ma²
+           mw²), over-covered here */
+        eC = cx ? 2 * u * CYL__P(labs)(C) + 64 * u * u * (F->MM + F->R2 + 9 * ma * ma * mw * mw) +
+                      tiny
+                : 3 * u * F->MM + F->em * (12 * ma * mw + 3 * F->em) + 7 * u * F->R2 +
+                      u * CYL__P(labs)(C) + tiny;
+        F->esq = F->noroots ? 0 : F->aa * (F->eD + 4 * u * Dp) / sq + u * sq;
+        /* one reciprocal for both quotients by |q|, raised by 4u so that each product bounds
+           its quotient */
+        iq = (1 + 4 * u) / aq;
+        rq = (eB + F->esq + u * (sq + aq)) * iq;
+        if (!(rq < (CYL__L)0.25)) return -1;
+        g = rq * (1 + 2 * rq) + rA * (1 + 2 * rA) + u;
+        e0 = CYL__P(labs)(ta) * g * (1 + 2 * rA) * (1 + 2 * g) * sf;
+        e1 = ((eC * iq + CYL__P(labs)(tb) * rq) * (1 + 2 * rq) + u * CYL__P(labs)(tb)) * sf;
+        if (F->noroots) e1 = e0; /* the contact: t = q/A at both ends */
+        c[0].et = swap ? e1 : e0;
+        c[1].et = swap ? e0 : e1;
+    }
+    return 0;
+}
+
+/* Each wall root tw[k] into c[k]: its side of the cap planes, and in CYL_PRECISE the
+   certification of its correction and of its rim. Returns -1 where the solver must answer,
+   else 0. */
+CYL__PART int CYL__P(fcert)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                           const CYL__P(fs) *F, const CYL__L a[3], const CYL__L d[3],
+                           const CYL__L s[3], const CYL__R lf[2], const CYL__L tw[2],
+                           CYL__P(fx) c[2])
+{
+    const CYL__L u = CYL__LU, sf = (CYL__L)1 + (CYL__L)1 / 64;
+    int k;
+    for (k = 0; k < 2; k++) {
+        /* the root against the cap planes: v|a| = a·w + t·a·d against ±H|a| */
+        CYL__L vn = CYL__LMADD(tw[k], F->ad, F->aw);
+        c[k].sg = !F->hfin || CYL__P(labs)(vn) <= F->Hn ? 0 : (vn < 0 ? -1 : 1);
+        c[k].t = tw[k];
+        /* the wall root's correction in the output (a root that gives way to a cap plane is
+           not corrected at all): steps with this √(|a|²D) as fsteps counts them; where one is
+           not enough, first one step with √ from its own residual, which certifies itself
+           (frefr), then those steps; where more than CYL__STEPS would be needed, that step
+           here, else the solver */
+        if (F->ce && !c[k].sg && !F->noroots) {
+            const CYL__L r = F->r, md = F->md, sq = F->sq, esq = F->esq;
+#if !CYL__WIDE
+            CYL__L at = CYL__P(labs)(tw[k]), x, x2;
+            /* a flag, not a branch: the bound comes at the end of a long chain */
+            c[k].resid = CYL__P(fsteps)(c[k].et, at, sq, esq, md, r, 1) > 1;
+            if (c[k].resid) {
+                /* fsteps' e_n <= x^(n-1)·e_1 + 8L/(1 − x), x = 2·esq/sq, L its target:
+                   x <= 1/32 and x^6·e_1 <= L give n <= 6 = CYL__STEPS. Else the residual step
+                   here, then the counted steps, then the solver, so that every entry point
+                   hands the call over alike (whichever root it reports); a t from here is
+                   final (steps 0) */
+                x = 2 * esq / sq;
+                x2 = x * x;
+                if (!(x <= (CYL__L)0.03125 &&
+                      x2 * x2 * x2 * c[k].et <= (CYL__L)0.25 * u * (at + r / md))) {
+                    const CYL__L cb[8] = {r * F->na * (1 + 4 * u), F->ms, F->es, F->ma, F->mw,
+                                          md, F->eA, r / md};
+                    CYL__L tc = tw[k];
+                    c[k].resid = 0;
+                    if (CYL__P(frefr)(ray, cyl, a, d, s, r, lf, F->A, tw[k], k, cb, &tc)) {
+                        c[k].t = tc;
+                        c[k].et += (CYL__L)0.25 * u * (at + r / md) + 2 * u * CYL__P(labs)(tc);
+                        c[k].steps = 0;
+                    } else if ((c[k].steps = CYL__P(fsteps)(c[k].et, at, sq, esq, md, r,
+                                                            CYL__STEPS)) > CYL__STEPS) {
+                        return -1;
+                    }
+                }
+            }
+#else
+            (void)ray;
+            (void)cyl;
+            (void)a;
+            (void)d;
+            (void)s;
+            (void)lf;
+            if (CYL__P(fsteps)(c[k].et, CYL__P(labs)(tw[k]), sq, esq, md, r, CYL__STEPS) >
+                CYL__STEPS)
                 return -1;
 #endif
-            }
         }
-        if (D >= -band) {
-            tangent = D <= band;
-            if (!tangent || !(opts & CYL_NO_TANGENT)) {
-                /* roots of A t² + 2B t + C, B = m·s, C = |m|² − r²|a|², B² − AC = |a|²D */
-                B = comp ? Bc : CYL__P(ldot)(m, s);
-                C = MM - R2;
-                Dp = D > 0 ? D : 0;
-                sq = CYL__LSQRT(aa * Dp);
-                noroots = comp && !(sq > 0);
-                q = CYL__P(qpair)(B, sq);
-                if (!(CYL__P(labs)(q) >= tiny)) return -1; /* a contact where B = D = 0 */
-                ta = q / A;
-                tb = C / q;
-                if (comp ? !noroots
-                         : (CYL__P(labs)(C) <= 64 * u * (MM + R2) ||
-                            CYL__P(cnear)(tb, CYL__LMADD(tb, ad, aw), q,
-                                          64 * u * (3 * aa * mw * mw + R2), ad,
-                                          hfin ? Hn : (CYL__L)CYL__LMAX * 2, 1, tsc,
-                                          (CYL__L)ray->tmin, (CYL__L)ray->tmax))) {
-                    /* an origin on the surface within the roundings (a secondary ray), or a
-                       root C/q that C's rounding could move across a rim or an end of the t
-                       range: C from the exact o − c (fc0), so that the crossing near t = 0 is
-                       known to about u of itself for the rim and, in CYL_PRECISE, against
-                       tmin = 0 without the solver; near the tangent band in CYL_PRECISE (comp)
-                       always, unless there are no roots */
-                    C = CYL__P(fc0)(ray, cyl, a, d, s, r, lf);
-                    cx = 1;
-                    sb = CYL__P(sqbc)(B, A, C); /* √(B² − AC), kept where on the surface */
-                    if (!ce && CYL__P(onsurf)(C, R2) && CYL__P(labs)(CYL__P(qpair)(B, sb)) >= tiny) {
-                        sq = sb;
-                        q = CYL__P(qpair)(B, sq);
-                        ta = q / A;
-                    }
-                    tb = C / q;
-                }
-                /* a contact without roots (CYL_PRECISE near the band, D < 0): both ends at the
-                   point of closest approach −B/A, as the solver gives it */
-                if (noroots) tb = ta;
-                swap = ta > tb;
-                tw[0] = swap ? tb : ta;
-                tw[1] = swap ? ta : tb;
-                if (ce) {
-                    /* the roots' bounds: q' = −(B + sgn(B̂)√(|a|²D)) exact, |q − q'| <= eq,
-                       t = q/A or C/q (1/(x(1 − ε)) <= (1 + 2ε)/x for ε <= 1/4) */
-                    CYL__L eB, eC, aq = CYL__P(labs)(q), rq, rA = eA / A, g, e0, e1, iq;
-                    eB = comp ? eBc : 6 * ma * mw * (6 * u * ms + 2 * es) + tiny;
-                    /* C from fres carries u of itself and u² of |m|², r²|a|² and |a|²|o − c|²
-                       (<= 9 ma² mw²), over-covered here */
-                    eC = cx ? 2 * u * CYL__P(labs)(C) +
-                                  64 * u * u * (MM + R2 + 9 * ma * ma * mw * mw) + tiny
-                            : 3 * u * MM + em * (12 * ma * mw + 3 * em) + 7 * u * R2 +
-                                  u * CYL__P(labs)(C) + tiny;
-                    esq = noroots ? 0 : aa * (eD + 4 * u * Dp) / sq + u * sq;
-                    /* one reciprocal for both quotients by |q|, raised by 4u so that each
-                       product bounds its quotient */
-                    iq = (1 + 4 * u) / aq;
-                    rq = (eB + esq + u * (sq + aq)) * iq;
-                    if (!(rq < (CYL__L)0.25)) return -1;
-                    g = rq * (1 + 2 * rq) + rA * (1 + 2 * rA) + u;
-                    e0 = CYL__P(labs)(ta) * g * (1 + 2 * rA) * (1 + 2 * g) * sf;
-                    e1 = ((eC * iq + CYL__P(labs)(tb) * rq) * (1 + 2 * rq) + u * CYL__P(labs)(tb)) *
-                         sf;
-                    if (noroots) e1 = e0; /* the contact: t = q/A at both ends */
-                    c[0].et = swap ? e1 : e0;
-                    c[1].et = swap ? e0 : e1;
-                }
-                for (k = 0; k < 2; k++) {
-                    /* the root against the cap planes: v|a| = a·w + t·a·d against ±H|a| */
-                    CYL__L vn = CYL__LMADD(tw[k], ad, aw);
-                    c[k].sg = !hfin || CYL__P(labs)(vn) <= Hn ? 0 : (vn < 0 ? -1 : 1);
-                    c[k].t = tw[k];
-                    /* the wall root's correction in the output (a root that gives way to a
-                       cap plane is not corrected at all): steps with this √(|a|²D) as fsteps
-                       counts them; where one is not enough, first one step with √ from its own
-                       residual, which certifies itself (frefr), then those steps; where more
-                       than CYL__STEPS would be needed, that step here, else the solver */
-                    if (ce && !c[k].sg && !noroots) {
+        if (F->ce && F->hfin) {
+            CYL__L av = CYL__P(labs)(vn), ev;
+            ev = (F->eaw + F->eHn + CYL__P(labs)(tw[k]) * (F->ead + 6 * u * F->ma * F->md) +
+                  (3 * F->ma * F->md + F->ead) * c[k].et + u * av) * sf;
+            if (!(av > F->Hn + ev) && !(av < F->Hn - ev)) return -1;
+        }
+    }
+    return 0;
+}
+
+/* The wall roots in c against the solid's caps: the roots are ordered, so the ray runs from
+   one side to the other: the solid is entered through the cap of side 0 (or the wall), left
+   through that of side 1. Returns -1 where the solver must answer, else 0. */
+CYL__PART int CYL__P(fclip)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                           const CYL__P(fs) *F, const CYL__L a[3], const CYL__L d[3],
+                           const CYL__L s[3], const CYL__L m[3], const CYL__R lf[2],
+                           CYL__P(fx) c[2])
+{
+    const CYL__L u = CYL__LU, sf = (CYL__L)1 + (CYL__L)1 / 64;
+    int k;
+    for (k = 0; k < 2; k++) {
+        if (!c[k].sg) {
+            c[k].ok = 1;
+        } else if (F->caps && c[0].sg != c[1].sg) {
+            CYL__L num = (CYL__L)c[k].sg * F->Hn - F->aw, aad = CYL__P(labs)(F->ad);
+            c[k].t = num / F->ad;
+            if (F->ce) {
+                const CYL__L eHn = F->eHn, eaw = F->eaw;
+                if (!(aad > 2 * F->ead)) return -1;
+                c[k].et = ((eHn + eaw + u * CYL__P(labs)(num) + CYL__P(labs)(c[k].t) * F->ead) *
+                               2 / aad +
+                           u * CYL__P(labs)(c[k].t)) * sf;
 #if !CYL__WIDE
-                        CYL__L at = CYL__P(labs)(tw[k]), x, x2;
-                        /* a flag, not a branch: the bound comes at the end of a long chain */
-                        c[k].resid = CYL__P(fsteps)(c[k].et, at, sq, esq, md, r, 1) > 1;
-                        if (c[k].resid) {
-                            /* fsteps' e_n <= x^(n-1)·e_1 + 8L/(1 − x), x = 2·esq/sq, L its
-                               target: x <= 1/32 and x^6·e_1 <= L give n <= 6 = CYL__STEPS. Else
-                               the residual step here, then the counted steps, then the solver,
-                               so that every entry point hands the call over alike (whichever
-                               root it reports); a t from here is final (steps 0) */
-                            x = 2 * esq / sq;
-                            x2 = x * x;
-                            if (!(x <= (CYL__L)0.03125 &&
-                                  x2 * x2 * x2 * c[k].et <= (CYL__L)0.25 * u * (at + r / md))) {
-                                const CYL__L cb[8] = {r * na * (1 + 4 * u), ms, es, ma, mw, md,
-                                                      eA, r / md};
-                                CYL__L tc = tw[k];
-                                c[k].resid = 0;
-                                if (CYL__P(frefr)(ray, cyl, a, d, s, r, lf, A, tw[k], k, cb, &tc)) {
-                                    c[k].t = tc;
-                                    c[k].et += (CYL__L)0.25 * u * (at + r / md) +
-                                               2 * u * CYL__P(labs)(tc);
-                                    c[k].steps = 0;
-                                } else if ((c[k].steps = CYL__P(fsteps)(c[k].et, at, sq, esq, md,
-                                                                        r, CYL__STEPS)) >
-                                           CYL__STEPS) {
-                                    return -1;
-                                }
-                            }
-                        }
+                if (CYL__P(labs)(num) <= 4 * (eHn + eaw)) {
+                    /* an origin on the cap plane within the roundings (a secondary ray from a
+                       cap): the crossing from double words (fcapt: its numerator and a·d
+                       carry u² of their terms, its quotient rounds twice), decided against
+                       tmin = 0 without the solver */
+                    CYL__L at;
+                    c[k].t = CYL__P(fcapt)(ray, cyl, a, d, F->H, lf, c[k].sg, c[k].t);
+                    c[k].steps = 0;
+                    at = CYL__P(labs)(c[k].t);
+                    c[k].et = (2 * u * at + 16 * u * u *
+                               (F->Hn + 3 * F->ma * F->mw + at * 3 * F->ma * F->md) * 2 / aad) *
+                                  sf +
+                              CYL__LMIN;
+                }
+#endif
+            }
+            /* a grazing interval's cap end must still lie on its disk */
+            c[k].ok = !F->tangent || CYL__P(fdisk)(m, s, F->R2, c[k].t);
+        }
+    }
+#if CYL__WIDE
+    (void)ray;
+    (void)cyl;
+    (void)a;
+    (void)d;
+    (void)lf;
+#endif
+    return 0;
+}
+
+/* The crossings c of a ray that is not parallel: -1 where the solver must answer, 0 a miss,
+   1 with c set. */
+CYL__PART int CYL__P(fwall)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                           CYL__P(fs) *F, const CYL__L a[3], const CYL__L d[3],
+                           const CYL__L s[3], const CYL__L m[3], const CYL__R lf[2],
+                           CYL__P(fx) c[2])
+{
+    CYL__L Bc[2] = {0, 0}, tw[2]; /* B from double words (comp) and its bound */
+    /* certified: beside (above), or clearly crossed, else fnear */
+    if (F->ce && !(F->D > F->band + F->eD) && CYL__P(fnear)(ray, cyl, F, a, d, lf, Bc)) return -1;
+    if (!(F->D >= -F->band)) return 0;
+    F->tangent = F->D <= F->band;
+    if (F->tangent && (opts & CYL_NO_TANGENT)) return 0;
+    if (CYL__P(froots)(ray, cyl, F, a, d, s, m, lf, Bc, c, tw) ||
+        CYL__P(fcert)(ray, cyl, F, a, d, s, lf, tw, c) ||
+        CYL__P(fclip)(ray, cyl, F, a, d, s, m, lf, c))
+        return -1;
+    return 1;
+}
+
+/* The crossings c kept in [tmin, tmax], as indices into sel (the first only, for want < 2):
+   their number, or -1 where CYL_PRECISE hands one over. */
+CYL__PART int CYL__P(fpick)(const CYL__N(ray) *ray, const CYL__P(fs) *F, const CYL__P(fx) c[2],
+                           int want, int sel[2])
+{
+    CYL__L tmin = (CYL__L)ray->tmin, tmax = (CYL__L)ray->tmax, tsc = F->tsc;
+    int k, kept = 0;
+    for (k = 0; F->ce && k < 2; k++) {
+        /* CYL_PRECISE: a crossing too close to tmin or tmax to tell goes to the solver, for
+           every entry point alike, unless it is inside the t-range band, where either answer
+           is right (N9): [tu − eu, tu + eu] holds an end and the exact t, so they are within
+           2·eu, and max(|tu| − eu, r/|d|) is at most the band's scale max(|t|, r/|d|)
+           (1 + 1/64 covers the roundings of r/|d| and of this test). Secondary rays (an
+           origin on the surface, tmin = 0) are decided here. */
+        CYL__L tu = c[k].t * tsc, eu = c[k].et * tsc, sc;
+        if (c[k].ok && !(tu + eu < tmin || tu - eu > tmax) &&
+            !(tu - eu > tmin && tu + eu < tmax)) {
+            sc = F->r / CYL__LSQRT(F->dd) * tsc;
+            if (CYL__P(labs)(tu) - eu > sc) sc = CYL__P(labs)(tu) - eu;
+            if (!(2 * eu * (1 + (CYL__L)1 / 64) <= (CYL__L)CYL__TBAND * sc)) return -1;
+        }
+    }
+    for (k = 0; k < 2; k++) {
+        CYL__L tu = c[k].t * tsc;
+        if (c[k].ok && tu >= tmin && tu <= tmax && CYL__P(labs)(tu) <= (CYL__L)CYL__MAXR) {
+            sel[kept] = k;
+            kept++;
+            if (want < 2) break;
+        }
+    }
+    return kept;
+}
+
+/* The unit outward wall normal y × a at y = m + t·s (no cancellation: y ⊥ a) into nl, y into
+   y; returns the face that turns it toward the ray. */
+CYL__PART CYL__L CYL__P(fnormal)(const CYL__L a[3], const CYL__L d[3], const CYL__L s[3],
+                                const CYL__L m[3], CYL__L t, CYL__L nl[3], CYL__L y[3])
+{
+    CYL__L len2;
+    int k;
+    /* y stays a loop: written out, gcc -Os spills more of fast() on Cortex-M4F (its stack in
+       make sizes) */
+    for (k = 0; k < 3; k++) y[k] = CYL__LMADD(t, s[k], m[k]);
+    nl[0] = CYL__LMADD(y[1], a[2], -(y[2] * a[1]));
+    nl[1] = CYL__LMADD(y[2], a[0], -(y[0] * a[2]));
+    nl[2] = CYL__LMADD(y[0], a[1], -(y[1] * a[0]));
+    len2 = CYL__P(ldot)(nl, nl);
+    if (!(len2 >= CYL__LMIN)) {
+        /* y lost to cancellation (r far below the rounding of o − c): any unit vector
+           orthogonal to the axis */
+        int z0 = CYL__P(labs)(a[0]) <= CYL__P(labs)(a[1]); /* zero nl[0] */
+        nl[0] = z0 ? 0 : a[2];
+        nl[1] = z0 ? a[2] : 0;
+        nl[2] = z0 ? -a[1] : -a[0];
+        len2 = CYL__P(ldot)(nl, nl);
+    } else if (!(len2 <= CYL__LMAX)) {
+        /* a crossing so far out that |y × a|² overflows: scaled by its largest component */
+        CYL__L sk = 1 / CYL__P(lmax3)(nl);
+        nl[0] *= sk;
+        nl[1] *= sk;
+        nl[2] *= sk;
+        len2 = CYL__P(ldot)(nl, nl);
+    }
+    len2 = 1 / CYL__LSQRT(len2);
+    nl[0] *= len2;
+    nl[1] *= len2;
+    nl[2] *= len2;
+    return CYL__P(ldot)(nl, d) > 0 ? -1 : 1;
+}
+
+/* One hit of the fast path from crossing x (index k: 1 for the second root) into *o: t
+   corrected (double words, N4/N5), part, flags, v, the normal and t_err (N8). Nothing hands
+   over from here on: the caller's record is written directly; Hu is h/2 rounded toward 0. */
+CYL__PART void CYL__P(femit)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                            const CYL__P(fs) *F, const CYL__L a[3], const CYL__L d[3],
+                            const CYL__L s[3], const CYL__L m[3], const CYL__R lf[2],
+                            const CYL__P(fx) *x, int k, CYL__R Hu, CYL__N(hit) *o)
+{
+    const CYL__L sf = (CYL__L)1 + (CYL__L)1 / 64, tsc = F->tsc;
+    CYL__L t = x->t, tu, nl[3] = {0, 0, 0}, y[3], face = 1, et;
+    CYL__L tdev = 0; /* |t·tsc − tu| where the frame's t is not exactly tu */
+    CYL__R tr;
+    tu = t * tsc;
+#if !CYL__WIDE
+    if (x->steps && (x->sg || !F->tangent || (F->comp && !F->noroots))) {
+        /* the crossing to an ulp, kept in the accepted range; CYL_PRECISE first tries one
+           step with √ from its own residual where one plain step is not enough (ce first:
+           without it all of this folds away), and where that step does not certify itself
+           takes the plain steps fsteps counts (the certification made sure there are at most
+           CYL__STEPS) */
+        if (x->sg) {
+            t = CYL__P(fcapt)(ray, cyl, a, d, F->H, lf, x->sg, t);
+        } else {
+            const CYL__L u = CYL__LU, r = F->r, md = F->md;
+            const CYL__L cb[8] = {r * F->na * (1 + 4 * u), F->ms, F->es, F->ma, F->mw, md, F->eA,
+                                  r / md};
+            int rs = F->ce && x->resid;
+            if (!rs || !CYL__P(frefr)(ray, cyl, a, d, s, r, lf, F->A, x->t, k, cb, &t))
+                t = CYL__P(fref)(ray, cyl, a, d, s, r, lf, F->A, F->sq, x->t, k,
+                                 rs ? CYL__P(fsteps)(x->et, CYL__P(labs)(x->t), F->sq, F->esq,
+                                                     md, r, CYL__STEPS)
+                                    : x->steps);
+        }
+        tdev = CYL__P(fclamp)(ray, tsc, &t, &tu);
+    }
 #else
-                        if (CYL__P(fsteps)(c[k].et, CYL__P(labs)(tw[k]), sq, esq, md, r,
-                                           CYL__STEPS) > CYL__STEPS)
-                            return -1;
+    (void)ray;
+    (void)cyl;
+    (void)lf;
 #endif
-                    }
-                    if (ce && hfin) {
-                        CYL__L av = CYL__P(labs)(vn), ev;
-                        ev = (eaw + eHn + CYL__P(labs)(tw[k]) * (ead + 6 * u * ma * md) +
-                              (3 * ma * md + ead) * c[k].et + u * av) * sf;
-                        if (!(av > Hn + ev) && !(av < Hn - ev)) return -1;
-                    }
-                }
-                /* the roots are ordered, so the ray runs from one side to the other: the solid
-                   is entered through the cap of side 0 (or the wall), left through that of
-                   side 1 */
-                for (k = 0; k < 2; k++) {
-                    if (!c[k].sg) {
-                        c[k].ok = 1;
-                    } else if (caps && c[0].sg != c[1].sg) {
-                        CYL__L num = (CYL__L)c[k].sg * Hn - aw, aad = CYL__P(labs)(ad);
-                        c[k].t = num / ad;
-                        if (ce) {
-                            if (!(aad > 2 * ead)) return -1;
-                            c[k].et = ((eHn + eaw + u * CYL__P(labs)(num) +
-                                        CYL__P(labs)(c[k].t) * ead) * 2 / aad +
-                                       u * CYL__P(labs)(c[k].t)) * sf;
-#if !CYL__WIDE
-                            if (CYL__P(labs)(num) <= 4 * (eHn + eaw)) {
-                                /* an origin on the cap plane within the roundings (a secondary
-                                   ray from a cap): the crossing from double words (fcapt: its
-                                   numerator and a·d carry u² of their terms, its quotient
-                                   rounds twice), decided against tmin = 0 without the solver */
-                                CYL__L at;
-                                c[k].t = CYL__P(fcapt)(ray, cyl, a, d, H, lf, c[k].sg, c[k].t);
-                                c[k].steps = 0;
-                                at = CYL__P(labs)(c[k].t);
-                                c[k].et = (2 * u * at + 16 * u * u *
-                                           (Hn + 3 * ma * mw + at * 3 * ma * md) * 2 / aad) * sf +
-                                          tiny;
-                            }
-#endif
-                        }
-                        /* a grazing interval's cap end must still lie on its disk */
-                        c[k].ok = !tangent || CYL__P(fdisk)(m, s, R2, c[k].t);
-                    }
-                }
-            }
+    tr = (CYL__R)tu;
+    o->t = tr;
+    o->part = x->sg ? (x->sg > 0 ? CYL_CAP_HIGH : CYL_CAP_LOW) : CYL_SIDE;
+    o->flags = (k ? CYL_F_INSIDE : 0u) | (F->parallel ? CYL_F_PARALLEL : 0u) |
+               (F->tangent && !x->sg ? CYL_F_TANGENT : 0u);
+    if (!x->sg) {
+        /* wall: v within ±h/2 up to rounding is reported within; an infinite tube's
+           saturates */
+        CYL__L v = CYL__LMADD(t, F->ad, F->aw) / F->na * F->vsc;
+        if (!(opts & CYL_NO_NORMAL)) face = CYL__P(fnormal)(a, d, s, m, t, nl, y);
+        v = v > (CYL__L)Hu ? (CYL__L)Hu : (v < -(CYL__L)Hu ? -(CYL__L)Hu : v);
+        if (!F->hfin && CYL__P(labs)(v) > (CYL__L)CYL__MAXR)
+            v = v > 0 ? (CYL__L)CYL__MAXR : -(CYL__L)CYL__MAXR;
+        o->v = (CYL__R)v;
+    } else {
+        if (!(opts & CYL_NO_NORMAL)) {
+            CYL__L sg = (CYL__L)x->sg / F->na;
+            nl[0] = sg * a[0];
+            nl[1] = sg * a[1];
+            nl[2] = sg * a[2];
+            face = sg * F->ad > 0 ? -1 : 1;
         }
-    } else if (caps && hfin) {
+        o->v = x->sg > 0 ? Hu : -Hu;
+    }
+    if (opts & CYL_OUTWARD) face = 1;
+    {
+        /* named before the conversion (MISRA 10.8); component by component, so that a, s, m
+           and the normal need no memory (see rescale) */
+        CYL__L n0 = face * nl[0], n1 = face * nl[1], n2 = face * nl[2];
+        o->n[0] = (CYL__R)n0;
+        o->n[1] = (CYL__R)n1;
+        o->n[2] = (CYL__R)n2;
+    }
+    if (opts & CYL_NO_ERRBOUND) {
+        o->t_err = CYL__MAXR * 2;
+        return;
+    }
+    {
+        /* t's bound, from the residual at t (N8): bounds on the errors of s and m (with the
+           rounding of o − c) give one on y = m + t·s, hence on f(t) = |y|² − r²|a|² and on
+           f'(t)/2 = y·s; the nearest root of the exact quadratic is within min(F/G, √(F/A)).
+           A cap: the plane's residual a·x(t) ∓ H|a| over a·d. */
+        CYL__L at = CYL__P(labs)(t), ma = F->ma, md = F->md, ms = F->ms, es = F->es, em = F->em;
+        if (!F->ce) CYL__P(ferr)(a, d, s, F->mw, &ma, &md, &ms, &es, &em);
+        if (!x->sg) {
+            int j;
+            if (opts & CYL_NO_NORMAL)
+                for (j = 0; j < 3; j++) y[j] = CYL__LMADD(t, s[j], m[j]);
+            et = CYL__P(wbound)(y, CYL__P(ldot)(y, y), CYL__P(ldot)(y, s), at, F->A, F->R2, ms, es,
+                                em);
+        } else {
+            et = CYL__P(cbound)(t, F->ad, F->aw, (CYL__L)x->sg * F->Hn, 3 * ma * F->mw,
+                                3 * ma * md);
+        }
+        /* in the caller's units */
+        o->t_err = CYL__P(errup)(et * sf * tsc + tdev, tu, tr);
+    }
+}
+
+/* want: 0 occluded (returns 1 or 0), 1 the nearest hit into hits[0], 2 every hit.
+   Returns -1 (nothing written) when the solver must answer. */
+#if CYL__QUICK && CYL__WIDE
+#define CYL__FASTQ CYL__SLOW /* only behind the lean path's hand-over: out of line */
+#else
+#define CYL__FASTQ CYL__FAST
+#endif
+CYL__FASTQ int CYL__P(fast)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                          int want, CYL__N(hit) *hits)
+{
+    CYL__L a[3], d[3], s[3], m[3];
+    CYL__R lf[2] = {1, 1}; /* the frame's length scale, as two factors */
+    CYL__P(fs) F;
+    CYL__P(fx) c[2];
+    int i, k, n, sel[2] = {0, 0};
+    n = CYL__P(fframe)(ray, cyl, opts, &F, a, d, s, m, lf);
+    if (n <= 0) return n;
+    for (k = 0; k < 2; k++) {
+        c[k].ok = c[k].sg = c[k].resid = 0;
+        c[k].steps = 1;
+        c[k].t = c[k].et = 0;
+    }
+    if (!F.parallel) {
+        n = CYL__P(fwall)(ray, cyl, opts, &F, a, d, s, m, lf, c);
+        if (n <= 0) return n;
+    } else if (F.caps && F.hfin) {
         /* the wall is never hit; a cap is, where the ray point is on its disk */
         for (k = 0; k < 2; k++) {
-            c[k].sg = (k == 0) == (ad > 0) ? -1 : 1;
-            c[k].t = ((CYL__L)c[k].sg * Hn - aw) / ad;
-            c[k].ok = CYL__P(fdisk)(m, s, R2, c[k].t);
+            c[k].sg = (k == 0) == (F.ad > 0) ? -1 : 1;
+            c[k].t = ((CYL__L)c[k].sg * F.Hn - F.aw) / F.ad;
+            c[k].ok = CYL__P(fdisk)(m, s, F.R2, c[k].t);
         }
     }
-
+    n = CYL__P(fpick)(ray, &F, c, want, sel);
+    if (want == 0 || n <= 0) return n < 0 ? -1 : n > 0;
     {
-        CYL__L tmin = (CYL__L)ray->tmin, tmax = (CYL__L)ray->tmax;
-        int kept = 0, sel[2] = {0, 0};
-        for (k = 0; ce && k < 2; k++) {
-            /* CYL_PRECISE: a crossing too close to tmin or tmax to tell goes to the solver, for
-               every entry point alike, unless it is inside the t-range band,
-               where either answer is right (N9): [tu − eu, tu + eu]
-               holds an end and the exact t, so they are within 2·eu, and max(|tu| − eu, r/|d|)
-               is at most the band's scale max(|t|, r/|d|) (1 + 1/64 covers the roundings of
-               r/|d| and of this test). Secondary rays (an origin on the surface, tmin = 0) are
-               decided here. */
-            CYL__L tu = c[k].t * tsc, eu = c[k].et * tsc, sc;
-            if (c[k].ok && !(tu + eu < tmin || tu - eu > tmax) &&
-                !(tu - eu > tmin && tu + eu < tmax)) {
-                sc = r / CYL__LSQRT(dd) * tsc;
-                if (CYL__P(labs)(tu) - eu > sc) sc = CYL__P(labs)(tu) - eu;
-                if (!(2 * eu * (1 + (CYL__L)1 / 64) <= (CYL__L)CYL__TBAND * sc)) return -1;
-            }
-        }
-        for (k = 0; k < 2; k++) {
-            CYL__L tu = c[k].t * tsc;
-            if (c[k].ok && tu >= tmin && tu <= tmax && CYL__P(labs)(tu) <= (CYL__L)CYL__MAXR) {
-                sel[kept] = k;
-                kept++;
-                if (want < 2) break;
-            }
-        }
-        if (want == 0 || !kept) return kept > 0;
-        {
-            /* nothing hands over from here on: the caller's record is written directly */
-            CYL__R Hu = cyl->h * CYL__C(0.5);
-            if (Hu + Hu > cyl->h) Hu = (cyl->h - CYL__MINR * 2 * CYL__U) * CYL__C(0.5);
-            for (i = 0; i < kept; i++) {
-                const CYL__P(fx) *x = &c[sel[i]];
-                CYL__N(hit) *o = &hits[i];
-                CYL__L t = x->t, tu, nl[3] = {0, 0, 0}, y[3], face = 1, et;
-                CYL__L tdev = 0; /* |t·tsc − tu| where the frame's t is not exactly tu */
-                CYL__R tr;
-                tu = t * tsc;
-#if !CYL__WIDE
-                if (x->steps && (x->sg || !tangent || (comp && !noroots))) {
-                    /* the crossing to an ulp, kept in the accepted range; CYL_PRECISE first
-                       tries one step with √ from its own residual where one plain step is not
-                       enough (ce first: without it all of this folds away), and where that
-                       step does not certify itself takes the plain steps fsteps counts (the
-                       certification made sure there are at most CYL__STEPS) */
-                    if (x->sg) {
-                        t = CYL__P(fcapt)(ray, cyl, a, d, H, lf, x->sg, t);
-                    } else {
-                        const CYL__L cb[8] = {r * na * (1 + 4 * u), ms, es, ma, mw, md, eA,
-                                              r / md};
-                        int rs = ce && x->resid;
-                        if (!rs ||
-                            !CYL__P(frefr)(ray, cyl, a, d, s, r, lf, A, x->t, sel[i], cb, &t))
-                            t = CYL__P(fref)(ray, cyl, a, d, s, r, lf, A, sq, x->t, sel[i],
-                                             rs ? CYL__P(fsteps)(x->et, CYL__P(labs)(x->t), sq,
-                                                                 esq, md, r, CYL__STEPS)
-                                                : x->steps);
-                    }
-                    tdev = CYL__P(fclamp)(ray, tsc, &t, &tu);
-                }
-#endif
-                tr = (CYL__R)tu;
-                o->t = tr;
-                o->part = x->sg ? (x->sg > 0 ? CYL_CAP_HIGH : CYL_CAP_LOW) : CYL_SIDE;
-                o->flags = (sel[i] ? CYL_F_INSIDE : 0u) | (parallel ? CYL_F_PARALLEL : 0u) |
-                           (tangent && !x->sg ? CYL_F_TANGENT : 0u);
-                if (!x->sg) {
-                    /* wall: y = a × x(t) = m + t·s; the outward normal is y × a, which has no
-                       cancellation (y ⊥ a) */
-                    CYL__L v = CYL__LMADD(t, ad, aw) / na * vsc;
-                    if (!(opts & CYL_NO_NORMAL)) {
-                        CYL__L len2;
-                        /* y stays a loop: written out, gcc -Os spills more of fast() on
-                           Cortex-M4F (its stack in make sizes) */
-                        for (k = 0; k < 3; k++) y[k] = CYL__LMADD(t, s[k], m[k]);
-                        nl[0] = CYL__LMADD(y[1], a[2], -(y[2] * a[1]));
-                        nl[1] = CYL__LMADD(y[2], a[0], -(y[0] * a[2]));
-                        nl[2] = CYL__LMADD(y[0], a[1], -(y[1] * a[0]));
-                        len2 = CYL__P(ldot)(nl, nl);
-                        if (!(len2 >= tiny)) {
-                            /* y lost to cancellation (r far below the rounding of o − c):
-                               any unit vector orthogonal to the axis */
-                            int z0 = CYL__P(labs)(a[0]) <= CYL__P(labs)(a[1]); /* zero nl[0] */
-                            nl[0] = z0 ? 0 : a[2];
-                            nl[1] = z0 ? a[2] : 0;
-                            nl[2] = z0 ? -a[1] : -a[0];
-                            len2 = CYL__P(ldot)(nl, nl);
-                        } else if (!(len2 <= CYL__LMAX)) {
-                            /* a crossing so far out that |y × a|² overflows:
-                               scaled by its largest component */
-                            CYL__L sk = 1 / CYL__P(lmax3)(nl);
-                            nl[0] *= sk;
-                            nl[1] *= sk;
-                            nl[2] *= sk;
-                            len2 = CYL__P(ldot)(nl, nl);
-                        }
-                        len2 = 1 / CYL__LSQRT(len2);
-                        nl[0] *= len2;
-                        nl[1] *= len2;
-                        nl[2] *= len2;
-                        face = CYL__P(ldot)(nl, d) > 0 ? -1 : 1;
-                    }
-                    /* within ±h/2 up to rounding: reported within; an infinite tube's v
-                       saturates */
-                    v = v > (CYL__L)Hu ? (CYL__L)Hu : (v < -(CYL__L)Hu ? -(CYL__L)Hu : v);
-                    if (!hfin && CYL__P(labs)(v) > (CYL__L)CYL__MAXR)
-                        v = v > 0 ? (CYL__L)CYL__MAXR : -(CYL__L)CYL__MAXR;
-                    o->v = (CYL__R)v;
-                } else {
-                    if (!(opts & CYL_NO_NORMAL)) {
-                        CYL__L sg = (CYL__L)x->sg / na;
-                        nl[0] = sg * a[0];
-                        nl[1] = sg * a[1];
-                        nl[2] = sg * a[2];
-                        face = sg * ad > 0 ? -1 : 1;
-                    }
-                    o->v = x->sg > 0 ? Hu : -Hu;
-                }
-                if (opts & CYL_OUTWARD) face = 1;
-                {
-                    /* named before the conversion (MISRA 10.8); component by component, so
-                       that a, s, m and the normal need no memory (see rescale) */
-                    CYL__L n0 = face * nl[0], n1 = face * nl[1], n2 = face * nl[2];
-                    o->n[0] = (CYL__R)n0;
-                    o->n[1] = (CYL__R)n1;
-                    o->n[2] = (CYL__R)n2;
-                }
-                if (opts & CYL_NO_ERRBOUND) {
-                    o->t_err = CYL__MAXR * 2;
-                    continue;
-                }
-                {
-                    /* t's bound, from the residual at t (N8): bounds on the
-                       errors of s and m (with the rounding of o − c) give one on y = m + t·s,
-                       hence on f(t) = |y|² − r²|a|² and on f'(t)/2 = y·s; the nearest root of
-                       the exact quadratic is within min(F/G, √(F/A)). A cap: the plane's
-                       residual a·x(t) ∓ H|a| over a·d. */
-                    CYL__L at = CYL__P(labs)(t);
-                    if (!ce) CYL__P(ferr)(a, d, s, mw, &ma, &md, &ms, &es, &em);
-                    if (!x->sg) {
-                        if (opts & CYL_NO_NORMAL)
-                            for (k = 0; k < 3; k++) y[k] = CYL__LMADD(t, s[k], m[k]);
-                        et = CYL__P(wbound)(y, CYL__P(ldot)(y, y), CYL__P(ldot)(y, s), at, A, R2,
-                                            ms, es, em);
-                    } else {
-                        et = CYL__P(cbound)(t, ad, aw, (CYL__L)x->sg * Hn, 3 * ma * mw,
-                                            3 * ma * md);
-                    }
-                    /* in the caller's units */
-                    o->t_err = CYL__P(errup)(et * sf * tsc + tdev, tu, tr);
-                }
-            }
-            if (kept == 2) CYL__P(order2)(hits);
-        }
-        return kept;
+        CYL__R Hu = cyl->h * CYL__C(0.5);
+        if (Hu + Hu > cyl->h) Hu = (cyl->h - CYL__MINR * 2 * CYL__U) * CYL__C(0.5);
+        for (i = 0; i < n; i++)
+            CYL__P(femit)(ray, cyl, opts, &F, a, d, s, m, lf, &c[sel[i]], sel[i], Hu, &hits[i]);
     }
+    if (n == 2) CYL__P(order2)(hits);
+    return n;
 }
 
 /* ------------------------------------------------------------------ the lean path */
@@ -2633,6 +2768,70 @@ CYL__INL int CYL__P(qframe)(CYL__P(qf) *f, CYL__L r, CYL__L h, CYL__L tmin, CYL_
            tmin <= tmax;
 }
 
+/* The lean path's wall roots t[0] <= t[1] (frame) where D >= −band, and their sides of the cap
+   planes in sg (0 between them, ∓1 beyond the low or high one). Returns -1 where the roots
+   are left to the fast path, else 0. */
+CYL__PART int CYL__P(qroots)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                            CYL__P(qf) *f, CYL__L r, CYL__L D, CYL__L MM, CYL__L ww,
+                            CYL__L tmin, CYL__L tmax, CYL__L t[2], int sg[2])
+{
+    CYL__L B = CYL__P(ldot)(f->m, f->s), C = MM - f->R2, sq, q, t0, t1, v0, v1;
+    f->sq = sq = CYL__LSQRT(f->aa * (D > 0 ? D : 0));
+    q = CYL__P(qpair)(B, sq);
+    if (!(CYL__P(labs)(q) >= CYL__LMIN)) return -1;
+    t0 = q / f->A;
+    t1 = C / q;
+    /* the roots against the slab between the cap planes, v|a| = a·w + t·a·d against
+       ±H|a| (+inf for the infinite tube) */
+    v0 = CYL__LMADD(t0, f->ad, f->aw);
+    v1 = CYL__LMADD(t1, f->ad, f->aw);
+#if CYL__WIDE
+    /* a root C/q that C's rounding could move across a rim (cnear): the fast path forms C
+       from the exact o − c (out of line: a call here would cost every call its spills).
+       Against tmin and tmax C/q errs by at most about 8u/sin of r/|d| (u of double), far
+       inside float's t-range band, so surface origins need nothing. */
+    if (CYL__P(cnear)(t1, v1, q, 64 * (CYL__L)CYL__LU * (f->aa * ww + f->R2), f->ad, f->Hn, 0,
+                      f->tsc, tmin, tmax))
+        return -1;
+#else
+    /* an origin on the surface within the roundings, or a root C/q that C's rounding could
+       move across a rim or an end of the t range (cnear): C from the exact o − c */
+    if (CYL__P(labs)(C) <= 64 * (CYL__L)CYL__LU * (MM + f->R2) ||
+        CYL__P(cnear)(t1, v1, q, 64 * (CYL__L)CYL__LU * (f->aa * ww + f->R2), f->ad, f->Hn, 1,
+                      f->tsc, tmin, tmax)) {
+        CYL__L sb;
+        C = CYL__P(fc0)(ray, cyl, f->a, f->d, f->s, r, f->lf);
+        sb = CYL__P(sqbc)(B, f->A, C); /* √(B² − AC), kept where on the surface */
+        if (CYL__P(onsurf)(C, f->R2) && CYL__P(labs)(CYL__P(qpair)(B, sb)) >= CYL__LMIN) {
+            f->sq = sq = sb;
+            q = CYL__P(qpair)(B, sq);
+            t0 = q / f->A;
+            v0 = CYL__LMADD(t0, f->ad, f->aw);
+        }
+        t1 = C / q;
+        v1 = CYL__LMADD(t1, f->ad, f->aw);
+    }
+#endif
+    if (t0 > t1) {
+        CYL__L x = t0;
+        t0 = t1;
+        t1 = x;
+        x = v0;
+        v0 = v1;
+        v1 = x;
+    }
+    t[0] = t0;
+    t[1] = t1;
+    sg[0] = (v0 > f->Hn) - (v0 < -f->Hn);
+    sg[1] = (v1 > f->Hn) - (v1 < -f->Hn);
+#if CYL__WIDE
+    (void)ray;
+    (void)cyl;
+    (void)r;
+#endif
+    return 0;
+}
+
 /* The lean path after its range check, on the frame f and what qframe formed (dd, MM, r2, ww,
    P) with r, h, tmin and tmax in the frame's type; scaled = 1 for the rescaled frame. */
 CYL__INL int CYL__P(qbody)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
@@ -2645,7 +2844,7 @@ CYL__INL int CYL__P(qbody)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     const CYL__L far2 = (opts & CYL_PRECISE) ? (CYL__L)72057594037927936.0 /* 2^56 */
                                              : (CYL__L)1152921504606846976.0; /* 2^60 */
     const CYL__L hi = CYL__LHI;
-    CYL__L HH, band, D, B, C, sq, q, t0, t1, v0, v1;
+    CYL__L HH, band, D, t0, t1, v0, v1;
     int caps = (opts & CYL_CAPS) != 0, sg0, sg1, in0, in1;
     unsigned tf;
 
@@ -2679,53 +2878,15 @@ CYL__INL int CYL__P(qbody)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         if (D < -band) return 0;
         tf = D <= band ? CYL_F_TANGENT : 0u;
         if (tf && (opts & CYL_NO_TANGENT)) return 0;
-        B = CYL__P(ldot)(f->m, f->s);
-        C = MM - f->R2;
-        f->sq = sq = CYL__LSQRT(f->aa * (D > 0 ? D : 0));
-        q = CYL__P(qpair)(B, sq);
-        if (!(CYL__P(labs)(q) >= CYL__LMIN)) return -1;
-        t0 = q / f->A;
-        t1 = C / q;
-        /* the roots against the slab between the cap planes, v|a| = a·w + t·a·d against
-           ±H|a| (+inf for the infinite tube) */
-        v0 = CYL__LMADD(t0, f->ad, f->aw);
-        v1 = CYL__LMADD(t1, f->ad, f->aw);
-#if CYL__WIDE
-        /* a root C/q that C's rounding could move across a rim (cnear): the fast path forms C
-           from the exact o − c (out of line: a call here would cost every call its spills).
-           Against tmin and tmax C/q errs by at most about 8u/sin of r/|d| (u of double), far
-           inside float's t-range band, so surface origins need nothing. */
-        if (CYL__P(cnear)(t1, v1, q, 64 * (CYL__L)CYL__LU * (f->aa * ww + f->R2), f->ad, f->Hn, 0,
-                          f->tsc, tmin, tmax))
-            return -1;
-#else
-        /* an origin on the surface within the roundings, or a root C/q that C's rounding could
-           move across a rim or an end of the t range (cnear): C from the exact o − c */
-        if (CYL__P(labs)(C) <= 64 * (CYL__L)CYL__LU * (MM + f->R2) ||
-            CYL__P(cnear)(t1, v1, q, 64 * (CYL__L)CYL__LU * (f->aa * ww + f->R2), f->ad, f->Hn, 1,
-                          f->tsc, tmin, tmax)) {
-            C = CYL__P(fc0)(ray, cyl, f->a, f->d, f->s, r, f->lf);
-            D = CYL__P(sqbc)(B, f->A, C); /* √(B² − AC), kept where on the surface */
-            if (CYL__P(onsurf)(C, f->R2) && CYL__P(labs)(CYL__P(qpair)(B, D)) >= CYL__LMIN) {
-                f->sq = sq = D;
-                q = CYL__P(qpair)(B, sq);
-                t0 = q / f->A;
-                v0 = CYL__LMADD(t0, f->ad, f->aw);
-            }
-            t1 = C / q;
-            v1 = CYL__LMADD(t1, f->ad, f->aw);
+        {
+            CYL__L t[2];
+            int sg[2];
+            if (CYL__P(qroots)(ray, cyl, f, r, D, MM, ww, tmin, tmax, t, sg)) return -1;
+            t0 = t[0];
+            t1 = t[1];
+            sg0 = sg[0];
+            sg1 = sg[1];
         }
-#endif
-        if (t0 > t1) {
-            CYL__L x = t0;
-            t0 = t1;
-            t1 = x;
-            x = v0;
-            v0 = v1;
-            v1 = x;
-        }
-        sg0 = (v0 > f->Hn) - (v0 < -f->Hn);
-        sg1 = (v1 > f->Hn) - (v1 < -f->Hn);
         in0 = caps || !sg0;
         in1 = caps || !sg1;
         if (caps) {
