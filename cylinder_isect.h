@@ -2115,7 +2115,7 @@ CYL__PART int CYL__P(fnear)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     (void)a;
     (void)d;
     (void)lf;
-    (void)Bc;
+    Bc[0] = Bc[1] = 0;
     return -1;
 #endif
 }
