@@ -189,6 +189,14 @@
 #else
 #define CYL__SLOW static inline
 #endif
+/* The compensated solver and its output (solvet, finish): one out-of-line copy per precision,
+   shared by every entry point and option set, for which options are run-time values (it
+   answers only what the fast path hands over). Under -Os the compiler's choice, as above. */
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE_SIZE__) && !defined(CYL_INTERNAL)
+#define CYL__EXACT static __attribute__((noinline, unused))
+#else
+#define CYL__EXACT CYL__INL
+#endif
 /* The fast path out of line under -Os too: inlined into an entry point, its frame adds to the
    solver's (make sizes, Cortex-M4F's open tube: 776 B of stack, about 480 B without).
    Options still fold: gcc specialises it for constant ones (.constprop). */
@@ -1106,7 +1114,7 @@ CYL__INL int CYL__P(in_disk)(const CYL__P(frame) *f, CYL__R t)
 /* All crossings of the chosen surface (at most 2), sorted, then those in [tmin, tmax]; with
    the tangent band tang and the parallel tolerance para (this instance's, or the float API's
    where this double solver answers for it: wsolve). */
-CYL__INL int CYL__P(solvet)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+CYL__EXACT int CYL__P(solvet)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                            CYL__R tang, CYL__R para, CYL__P(frame) *f, CYL__P(cand) out[2])
 {
     CYL__P(cand) c[2];
@@ -1278,7 +1286,7 @@ CYL__INL void CYL__P(radial)(const CYL__P(frame) *f, CYL__R no[3])
     for (i = 0; i < 3; i++) no[i] /= len;
 }
 
-CYL__INL void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, unsigned opts,
+CYL__EXACT void CYL__P(finish)(const CYL__P(frame) *f, const CYL__P(cand) *cin, unsigned opts,
                             const CYL__N(ray) *ray, CYL__N(hit) *hit)
 {
     CYL__R no[3] = {0, 0, 0}, y[3] = {0, 0, 0}, ys = 0, v, face = 1;
