@@ -3225,7 +3225,9 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
    N3. Geometric discriminant B² − AC = |a|²·D, D = r²|s|² − P², P = (o − c)·s (Ray Tracing
         Gems, ch. 7; pbrt-v4 cylinders), with P compensated (Ogita, Rump, Oishi, "Accurate sum
         and dot product", SIAM J. Sci. Comput. 26, 2005): no difference of large squares when
-        the origin is far.
+        the origin is far. For an origin on the surface (C ≈ 0) the other form is the better
+        one: B² − AC errs by about u|a||w||s|·|B| and |a|²D by u·r²|a|²A, which near tangency
+        (|B| ≈ √e·r|a||s| there) is 1/√e times more.
    N4. Stable root pairing q = −(B + sgn(B)√Δ), t = q/A and C/q (Numerical Recipes §5.6),
         then one exact-quadratic correction of the returned root, δ from f(t + δ) = 0 with
         the residual f(t) = |m + t s|² − r²|a|² summed in compensated arithmetic.
@@ -3259,7 +3261,8 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
    float) the crossing is then corrected from double words: a wall root by the exact-quadratic
    step of N4, a cap crossing as in N5; so t is about an ulp in both APIs. There, for
    an origin on the surface within the roundings (a secondary ray), C = f(0) is formed from the
-   exact o − c first, so the crossing near t = 0 is decided from an accurate value; and in
+   exact o − c first, so the crossing near t = 0 is decided from an accurate value, and the
+   roots take √(B² − AC) with it (N3: there it errs by about u/√e, √(|a|²D) by u/e); and in
    every API it is wherever the rounding of C could move the root C/q across a rim (or, in the
    double API, an end of the t range): that root moves by about u·r/sin of the angle to the
    axis, and a flat disk (h far below r) multiplies that by r/h in units of its rim margin. Its
