@@ -129,8 +129,8 @@
    is the benign ones), t within 0.5 ulps on the well-conditioned hits of the benign families;
    CYL_PRECISE: none beyond the band in any family, 0.5 ulps. Cost per capped call on the
    well-conditioned family (instructions by callgrind, time the median of 5 runs): float 355
-   instructions, 40 ns (precise 355, 40 ns; without t_err and the normal 240, 28 ns), double
-   654, 61 ns (precise 1105, 84 ns; without t_err and the normal 547, 48 ns), against 119 and
+   instructions, 39 ns (precise 355, 39 ns; without t_err and the normal 240, 27 ns), double
+   652, 58 ns (precise 1105, 84 ns; without t_err and the normal 554, 47 ns), against 119 and
    118 instructions, 29 and 32 ns for the end-point (pa, pb, ra) formulation fed its own input
    form, which misclassifies 19,020 float and 14,704 double cases beyond the band. How each
    path gets there: N9; where the guarantees weaken (extreme ratios, flat disks): N11.
