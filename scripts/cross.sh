@@ -72,6 +72,8 @@ cross_cfg_flags() {
     all)       flags+=" -DCFG_ENTRY=CFG_ALL";;
     occluded)  flags+=" -DCFG_ENTRY=CFG_OCCLUDED";;
     every)     flags+=" -DCFG_ENTRY=CFG_EVERY";;
+    pair)      flags+=" -DCFG_ENTRY=CFG_PAIR";;
+    mixed)     flags+=" -DCFG_ENTRY=CFG_MIXED";;
     *) echo "unknown entry $entry" >&2; return 1;;
   esac
   if [ "$opts" = runtime ]; then flags+=" -DCFG_RUNTIME=1"; else flags+=" '-DCFG_OPTS=$opts'"; fi
@@ -98,6 +100,8 @@ cmd_sizes() {
       for p in f d; do
         case $prec in *$p*) ;; *) continue;; esac
         case $tprec in *$p*) ;; *) continue;; esac
+        # the mixed unit holds the double API too: only where double is compiled in
+        if [ "$entry" = mixed ]; then case $tprec in *d*) ;; *) continue;; esac; fi
         flags=$(cross_cfg_flags "$name" "$p" "$entry" "$opts" "$macros")
         echo "$cc $tflags $CROSS_WARN -fstack-usage -fcallgraph-info=su -I$CYL_INCLUDE $flags -c embedded/configs.c -o $out/$t/${p}_$name.o" >>"$jobs"
       done
