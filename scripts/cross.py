@@ -128,11 +128,13 @@ def table(sizes_csv, timing_csv, configs_txt, doc, bench_json=""):
     def entry_call(c):
         fn = {"intersect": "intersect", "all": "intersect_all", "occluded": "occluded",
               "every": "all three", "pair": "intersect and occluded",
-              "mixed": "cylf_intersect, and cyld_intersect with `0`,"}[c["entry"]]
+              "mixed": "cylf_intersect"}[c["entry"]]
         opts = "options at run time" if c["opts"] == "runtime" else (
             "`0`" if c["opts"] == "0" else "`" + c["opts"].replace("|", " \\| ") + "`")
         macros = "" if c["macros"] == "-" else ", " + ", ".join(
             "`-D" + m + "`" for m in c["macros"].split(","))
+        if c["entry"] == "mixed":
+            return f"{fn}, {opts}, and cyld_intersect, `0`{macros}"
         return f"{fn}, {opts}{macros}"
 
     def sz(t, n, p):
