@@ -1,0 +1,898 @@
+/* cylinder_isect.h - v2.0.0 (in development beside v1) - ray/cylinder intersection, C99, one header.
+
+   Ray against a finite cylinder given by center c, axis a, radius r and height h: the open
+   tube by default, the capped solid and the infinite tube as options; nearest hit, both
+   crossings, or a shadow-ray test. No allocation, no global state, no I/O; nothing to link but
+   sqrt (overridable). Every hit carries a rigorous bound on its t.
+
+   QUICK START
+   ===========
+       #include "cylinder_isect.h"
+
+       cyld_ray ray = {{-5, 0.5, 0.25}, {1, 0, 0}, 0, 100};   // origin o, direction d, tmin, tmax
+       cyld_cylinder cyl = {{0, 0, 0}, {0, 0, 1}, 1, 2};      // center c, axis a, radius r, height h
+       cyld_hit hit;
+       int rc = cyld_intersect(&ray, &cyl, CYL_CAPS, &hit);   // nearest hit of the capped solid
+       if (rc == CYL_HIT)
+           printf("t = %.17g +- %.2g\n", hit.t, hit.t_err);
+       else if (rc < 0)
+           printf("error: %s\n", cyl_strerror(rc));
+
+   No implementation macro: every function is `static inline` (CYL_DEF). cylf_* is the float
+   API, cyld_* the double one, both from one body this file includes twice. Link with -lm unless
+   sqrt inlines (gcc and clang with -fno-math-errno).
+
+   CONTRACT
+   ========
+   Geometry. The surface is the set of points at distance r from the axis line through c whose
+   axial coordinate v = â·(x − c) lies in [−h/2, h/2]; â = a/|a|. The cap at c − â·h/2 is
+   CYL_CAP_LOW, the one at c + â·h/2 is CYL_CAP_HIGH.
+     - a may have any nonzero length; only its direction counts.
+     - h = +INFINITY is the infinite tube (CYL_CAPS then changes nothing).
+     - default: the open tube (curved wall only); CYL_CAPS: the solid capped cylinder.
+   Ray. x(t) = o + t·d, d of any nonzero length, t in units of d; accepted t in [tmin, tmax]
+   (inclusive; ±INFINITY allowed). Hits whose t is not representable count as misses.
+
+   int cylf_intersect(const cylf_ray*, const cylf_cylinder*, unsigned opts, cylf_hit *hit)
+       The nearest hit with tmin <= t <= tmax: returns CYL_HIT and fills *hit, or CYL_MISS, or a
+       negative CYL_E_* code. On a miss or an error *hit is not touched, so it can be a caller's
+       closest-hit record.
+   int cylf_intersect_all(ray, cyl, opts, cylf_hit hits[2])
+       Every hit in range (at most 2), sorted by t; returns the count (0, 1, 2) or an error.
+       Open tube: both wall crossings. Capped solid: entry and exit. hits[i] for i >= count
+       are not touched.
+   int cylf_occluded(ray, cyl, opts)
+       1 if anything is hit in range, 0 if not, or an error: the shadow-ray test, the cheapest.
+   cylf_cylinder cylf_from_segment(const float p0[3], const float p1[3], float r)
+       The cylinder whose axis runs from p0 (low cap) to p1 (high cap): pipes, bonds, bones.
+       p0 == p1 gives a = 0 (and h = 0), which intersect reports as CYL_E_ZERO_AXIS.
+   const char *cyl_strerror(int code)
+       A short English description of any return value.
+
+   The hit. t; t_err: the exact intersection of the given (already rounded) inputs with the
+   reported part lies in [t − t_err, t + t_err] (a residual bound, N5); n: unit normal, facing
+   the ray origin (n·d <= 0) by default, the geometric outward normal with CYL_OUTWARD; v: axial
+   coordinate of the hit, within [−h/2, h/2] (exactly ±h/2 on a cap; on an infinite tube it
+   saturates at the largest finite value); part: CYL_SIDE, CYL_CAP_LOW, CYL_CAP_HIGH; flags:
+     CYL_F_INSIDE    the ray meets the surface from inside (it leaves the solid, or crosses the
+                     tube's wall outward: an origin inside gets this on its first hit);
+     CYL_F_TANGENT   a grazing wall contact: e = 1 − ρ²/r² lies within ±CYL_TANGENT_TOL, where ρ
+                     is the distance between the ray line and the axis line. Such a contact
+                     counts as a hit (both crossings, at or near the same t) unless
+                     CYL_NO_TANGENT is given; there t is only determined to about √u (N6)
+                     and t_err says so.
+     CYL_F_PARALLEL  sin(angle between d and a) <= CYL_PARALLEL_TOL: treated as parallel. The
+                     wall is then never hit; with CYL_CAPS a cap is hit where the ray point lies
+                     inside its disk. A wall crossing such a ray's inputs do determine (a ray
+                     leaving the wall can cross it again tens of radii along) is dropped too:
+                     the rule's limit (N7).
+   A hit exactly on the rim (the circle where wall and cap meet) is reported as CYL_SIDE.
+
+   Errors, checked in this order; *hit is never touched on an error:
+     CYL_E_NULL (-1) a NULL pointer            CYL_E_RADIUS (-5) r <= 0, NaN or infinite
+     CYL_E_NONFINITE (-2) NaN/inf in o, d, c, a CYL_E_HEIGHT (-6) h <= 0 or NaN
+     CYL_E_ZERO_DIR (-3) d == 0                 CYL_E_TRANGE (-7) tmin > tmax, or a NaN
+     CYL_E_ZERO_AXIS (-4) a == 0                CYL_E_OPTION (-8) unknown or compiled-out bit
+
+   OPTIONS (bits of opts)
+   =======
+     CYL_CAPS          solid capped cylinder instead of the open tube
+     CYL_OUTWARD       outward normal instead of the ray-facing one
+     CYL_NO_TANGENT    grazing contacts within the tangent tolerance are misses
+     CYL_PRECISE       the certified tier: not in this version (CYL_NO_PRECISE is defined and
+                       the bit returns CYL_E_OPTION)
+     CYL_NO_NORMAL     skip the normal: hit.n = {0, 0, 0}
+     CYL_NO_ERRBOUND   skip the bound: hit.t_err = +INFINITY
+     CYL_TRUSTED       the caller guarantees valid input. Accepted for compatibility: the hot
+                       path never validates (it checks derived values once, N2), so it saves
+                       nothing; NULL and option checks remain.
+   Pass options as constants: the entry points are forced inline (CYL_DEF), so the code of an
+   option not given folds away at each call site. Define CYL_DEF as plain `static inline` to let
+   the compiler keep one out-of-line copy where calls are many and code size matters more.
+
+   CONFIGURATION (define before including)
+   =============
+     macro                 default                      effect
+     CYL_NO_FLOAT          undefined                    leave out cylf_* (and its code)
+     CYL_NO_DOUBLE         undefined                    leave out cyld_*: no double anywhere
+     CYL_DEF               static inline, forced inline qualifier of every public function
+                           with gcc and clang unless -Os
+     CYL_SQRTF, CYL_SQRT   __builtin_sqrt[f] (gcc,      square roots; <math.h> is included
+                           clang), else sqrt[f]          only when a non-builtin default is used
+     CYL_FLOAT_WIDE        1 where double is hardware   the float API computes in double (the
+                           (x86-64, AArch64, ARM with   same body, another working type); 0: in
+                           VFP-D, RV64D, s390x, ppc64)  float (always so with CYL_NO_DOUBLE)
+     CYL_TANGENT_TOLF      2^-16 = 2^-(24-8)            tangent band on e = 1 − ρ²/r²
+     CYL_TANGENT_TOL       2^-45 = 2^-(53-8)
+     CYL_PARALLEL_TOLF     2^-24 = u (float)            parallel bound on sin(angle)
+     CYL_PARALLEL_TOL      2^-53 = u (double)
+     CYL_HEADER_FILENAME   "cylinder_isect.h"           how this file includes itself
+   Removed in v2 (#error says so): CYL_NO_FAST_PATH, CYL_INTERNAL, CYL_FMA, CYL_FMAF.
+
+   ACCURACY
+   ========
+   Not yet measured for v2: `make report` on this header regenerates these lines (issue 28).
+   Every decision is taken once with plain comparisons in the working type (N3); t comes from
+   the stable root pair, t_err from the residual at it (N5). Both APIs: a decision farther than
+   a few ulps of the problem's size from its boundary is right; far origins add the rounding
+   of o − c, about u·|o − c|/r of e (N6).
+
+   WHAT IT DOES NOT DO
+   ===================
+   No ray packets or SIMD, no BVH, no oblique cylinders or cones, no texture coordinates beyond
+   v, no nudging of spawned rays (use tmin or the previous hit's t_err). Needs IEEE-754 with
+   FLT_EVAL_METHOD == 0 and no -ffast-math (both refused by #error).
+
+   LICENSE: MIT. Copyright (c) 2026 the cylinder_isect developers.
+*/
+#if !defined(CYL__BODY)
+#ifndef CYLINDER_ISECT_H
+#define CYLINDER_ISECT_H
+
+#define CYL_VERSION_MAJOR 2
+#define CYL_VERSION_MINOR 0
+#define CYL_VERSION_PATCH 0
+
+#if defined(__FAST_MATH__)
+#error "cylinder_isect.h: -ffast-math reorders the operations its error bounds rely on; build this translation unit without it"
+#endif
+#if defined(CYL_NO_FLOAT) && defined(CYL_NO_DOUBLE)
+#error "cylinder_isect.h: CYL_NO_FLOAT and CYL_NO_DOUBLE together leave nothing"
+#endif
+#if defined(CYL_NO_FAST_PATH)
+#error "cylinder_isect.h: CYL_NO_FAST_PATH is gone in v2: there is one path, remove the macro"
+#endif
+#if defined(CYL_INTERNAL)
+#error "cylinder_isect.h: CYL_INTERNAL is gone in v2: internal functions follow CYL_DEF's call site; remove it"
+#endif
+#if defined(CYL_FMA) || defined(CYL_FMAF)
+#error "cylinder_isect.h: CYL_FMA/CYL_FMAF are gone in v2: the default tier uses no fma; remove them"
+#endif
+/* v2 has no certified tier yet: CYL_PRECISE is an unknown bit (issue 29 adds it). */
+#ifndef CYL_NO_PRECISE
+#define CYL_NO_PRECISE
+#endif
+
+#include <float.h>
+#include <stdint.h>
+#if !defined(FLT_EVAL_METHOD) || !(FLT_EVAL_METHOD == 0 || FLT_EVAL_METHOD == 16 || FLT_EVAL_METHOD == 32)
+#error "cylinder_isect.h: needs FLT_EVAL_METHOD == 0 (no excess precision, e.g. x87); use SSE2, or -fexcess-precision=fast"
+#endif
+
+/* Entry points forced inline where the compiler allows it, so constant options fold at every
+   call site (gcc keeps an entry point called from several places out of line otherwise); the
+   internal functions of the hot path always (CYL__INL), the exact path never (CYL__COLD). */
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE_SIZE__)
+#define CYL__INL static inline __attribute__((always_inline))
+#else
+#define CYL__INL static inline
+#endif
+#ifndef CYL_DEF
+#define CYL_DEF CYL__INL
+#endif
+#if defined(__GNUC__) || defined(__clang__)
+#define CYL__COLD static __attribute__((noinline, cold, unused))
+#else
+#define CYL__COLD static
+#endif
+#ifndef CYL_HEADER_FILENAME
+#define CYL_HEADER_FILENAME "cylinder_isect.h"
+#endif
+
+/* Return values. */
+#define CYL_HIT          1
+#define CYL_MISS         0
+#define CYL_E_NULL      (-1)
+#define CYL_E_NONFINITE (-2)
+#define CYL_E_ZERO_DIR  (-3)
+#define CYL_E_ZERO_AXIS (-4)
+#define CYL_E_RADIUS    (-5)
+#define CYL_E_HEIGHT    (-6)
+#define CYL_E_TRANGE    (-7)
+#define CYL_E_OPTION    (-8)
+
+/* Option bits. */
+#define CYL_CAPS         0x01u
+#define CYL_OUTWARD      0x02u
+#define CYL_NO_TANGENT   0x04u
+#define CYL_PRECISE      0x08u
+#define CYL_NO_NORMAL    0x10u
+#define CYL_NO_ERRBOUND  0x20u
+#define CYL_TRUSTED      0x40u
+#define CYL_OPTIONS_ALL  0x7fu
+#define CYL__SUPPORTED   (CYL_OPTIONS_ALL & ~CYL_PRECISE)
+
+/* hit.part */
+#define CYL_SIDE     0
+#define CYL_CAP_LOW  1
+#define CYL_CAP_HIGH 2
+
+/* hit.flags */
+#define CYL_F_INSIDE   0x1u
+#define CYL_F_TANGENT  0x2u
+#define CYL_F_PARALLEL 0x4u
+
+/* Tolerances (N7). Quotients, since C++11 has no hexadecimal float literals. */
+#ifndef CYL_TANGENT_TOLF
+#define CYL_TANGENT_TOLF (1.0f / 65536.0f)                    /* 2^-16 */
+#endif
+#ifndef CYL_TANGENT_TOL
+#define CYL_TANGENT_TOL (1.0 / 35184372088832.0)              /* 2^-45 */
+#endif
+#ifndef CYL_PARALLEL_TOLF
+#define CYL_PARALLEL_TOLF (1.0f / 16777216.0f)                /* 2^-24 */
+#endif
+#ifndef CYL_PARALLEL_TOL
+#define CYL_PARALLEL_TOL (1.0 / 9007199254740992.0)           /* 2^-53 */
+#endif
+
+/* Environment hooks: builtins where the compiler has them (no header, one instruction with
+   -fno-math-errno), <math.h> otherwise. */
+#if defined(__GNUC__) || defined(__clang__)
+#define CYL__MEMCPY(d, s, n) __builtin_memcpy(d, s, n)
+#ifndef CYL_SQRTF
+#define CYL_SQRTF(x) __builtin_sqrtf(x)
+#endif
+#ifndef CYL_SQRT
+#define CYL_SQRT(x) __builtin_sqrt(x)
+#endif
+#else
+#include <string.h>
+#define CYL__MEMCPY(d, s, n) memcpy(d, s, n)
+#if !defined(CYL_SQRTF) || !defined(CYL_SQRT)
+#include <math.h>
+#endif
+#ifndef CYL_SQRTF
+#define CYL_SQRTF(x) sqrtf(x)
+#endif
+#ifndef CYL_SQRT
+#define CYL_SQRT(x) sqrt(x)
+#endif
+#endif
+
+/* CYL_FLOAT_WIDE: the float API's working type is double, where double is hardware. */
+#ifndef CYL_FLOAT_WIDE
+#if !defined(CYL_NO_DOUBLE) &&                                                                 \
+    (defined(__x86_64__) || defined(_M_X64) || defined(__aarch64__) || defined(_M_ARM64) ||      \
+     (defined(__ARM_FP) && (__ARM_FP & 8)) || (defined(__riscv_flen) && __riscv_flen >= 64) || \
+     defined(__s390x__) || defined(__powerpc64__))
+#define CYL_FLOAT_WIDE 1
+#else
+#define CYL_FLOAT_WIDE 0
+#endif
+#endif
+#if CYL_FLOAT_WIDE && defined(CYL_NO_DOUBLE)
+#error "cylinder_isect.h: CYL_FLOAT_WIDE computes in double, which CYL_NO_DOUBLE excludes"
+#endif
+
+CYL_DEF const char *cyl_strerror(int code)
+{
+    switch (code) {
+    case CYL_HIT: return "hit";
+    case CYL_MISS: return "miss";
+    case CYL_E_NULL: return "a pointer argument is NULL";
+    case CYL_E_NONFINITE: return "a coordinate of o, d, c or a is NaN or infinite";
+    case CYL_E_ZERO_DIR: return "the ray direction d is the zero vector";
+    case CYL_E_ZERO_AXIS: return "the cylinder axis a is the zero vector";
+    case CYL_E_RADIUS: return "the radius is not a positive finite number";
+    case CYL_E_HEIGHT: return "the height is not positive (NaN or <= 0)";
+    case CYL_E_TRANGE: return "the t range is empty or NaN (tmin > tmax)";
+    case CYL_E_OPTION: return "unknown or compiled-out option bit";
+    default: return "unknown cylinder_isect return code";
+    }
+}
+
+/* One body, included once per precision with these parameters (the body #undefs them):
+     CYL__R  the API's type         CYL__N(x)  public name       CYL__P(x)  private name
+     CYL__LD 1: the working type L is double, 0: float
+     CYL__TANG, CYL__PARA  the tolerances   CYL__UINT, CYL__MANT, CYL__EBIAS  R's bit layout */
+#ifndef CYL_NO_DOUBLE
+#define CYL__BODY 1
+#define CYL__R double
+#define CYL__LD 1
+#define CYL__N(x) cyld_##x
+#define CYL__P(x) cyl__d_##x
+#define CYL__TANG CYL_TANGENT_TOL
+#define CYL__PARA CYL_PARALLEL_TOL
+#define CYL__UINT uint64_t
+#define CYL__MANT 53
+#define CYL__EBIAS 1023
+#include CYL_HEADER_FILENAME
+#endif
+
+#ifndef CYL_NO_FLOAT
+#define CYL__BODY 1
+#define CYL__R float
+#define CYL__N(x) cylf_##x
+#define CYL__P(x) cyl__f_##x
+#define CYL__LD CYL_FLOAT_WIDE
+#define CYL__TANG CYL_TANGENT_TOLF
+#define CYL__PARA CYL_PARALLEL_TOLF
+#define CYL__UINT uint32_t
+#define CYL__MANT 24
+#define CYL__EBIAS 127
+#include CYL_HEADER_FILENAME
+#endif
+
+#endif /* CYLINDER_ISECT_H */
+
+#else /* CYL__BODY: one precision, written once */
+
+/* R's constants, and those of the working type L (the same, or double for a wide float API).
+   The range (N2): the hot path takes squared lengths, |a|² and |d|² within 2^±200 (L = double)
+   or 2^±24 (L = float); the exact path scales into it, and takes r² down to 2^-600 / 2^-48. */
+#if CYL__MANT == 24
+#define CYL__RMAX FLT_MAX
+#define CYL__RSQRT(x) CYL_SQRTF(x)
+#else
+#define CYL__RMAX DBL_MAX
+#define CYL__RSQRT(x) CYL_SQRT(x)
+#endif
+#if CYL__LD
+#define CYL__L double
+#define CYL__LT(x) cyl__d_##x
+#define CYL__K(x) x
+#define CYL__LMAX DBL_MAX
+#define CYL__LU (DBL_EPSILON / 2)
+#define CYL__LSQRT(x) CYL_SQRT(x)
+#define CYL__LTINY 4.9406564584124654e-324 /* 2^-1074 */
+#define CYL__HOT_HI 1.6069380442589903e60  /* 2^200 */
+#define CYL__COLD_LO 2.4099198651028841e-181 /* 2^-600 */
+#else
+#define CYL__L float
+#define CYL__LT(x) cyl__f_##x
+#define CYL__K(x) x##f
+#define CYL__LMAX FLT_MAX
+#define CYL__LU (FLT_EPSILON / 2)
+#define CYL__LSQRT(x) CYL_SQRTF(x)
+#define CYL__LTINY 1.40129846e-45f /* 2^-149 */
+#define CYL__HOT_HI 16777216.0f /* 2^24 */
+#define CYL__COLD_LO 3.55271368e-15f /* 2^-48 */
+#endif
+#define CYL__HOT_LO (1 / CYL__HOT_HI)
+#define CYL__LINF (CYL__LMAX * 2)
+
+typedef struct CYL__N(ray) { CYL__R o[3], d[3], tmin, tmax; } CYL__N(ray);
+typedef struct CYL__N(cylinder) { CYL__R c[3], a[3], r, h; } CYL__N(cylinder);
+typedef struct CYL__N(hit) {
+    CYL__R t, t_err, n[3], v;
+    int part;
+    unsigned flags;
+} CYL__N(hit);
+
+/* The frame (N1): the inputs in L, possibly scaled (et, ev: t and v are 2^et and 2^ev times the
+   frame's), and everything derived from them once. */
+typedef struct CYL__P(frame) {
+    CYL__L w[3], d[3], a[3], r, H, tmin, tmax, tlim, vlim, lo;
+    CYL__L s[3], m[3], aa, dd, A, B, C, D, r2, r2aa, z0, zeta, sqaa, Ha;
+    int et, ev, exact;
+} CYL__P(frame);
+
+/* One crossing of the ray with the surface. */
+typedef struct CYL__P(cross) {
+    CYL__L t;
+    int part;
+    unsigned flags;
+} CYL__P(cross);
+
+static int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                        int want, CYL__N(hit) *hits);
+static inline int CYL__P(expo)(CYL__R x);
+static inline CYL__R CYL__P(scale)(CYL__R x, int k);
+
+/* ------------------------------------------------------------------ small tools */
+CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return x < 0 ? -x : x; }
+CYL__INL CYL__L CYL__P(max)(CYL__L x, CYL__L y) { return x > y ? x : y; }
+CYL__INL CYL__L CYL__P(min)(CYL__L x, CYL__L y) { return x < y ? x : y; }
+CYL__INL CYL__L CYL__P(dot)(const CYL__L x[3], const CYL__L y[3])
+{
+    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
+CYL__INL CYL__L CYL__P(norm1)(const CYL__L x[3])
+{
+    return CYL__P(abs)(x[0]) + CYL__P(abs)(x[1]) + CYL__P(abs)(x[2]);
+}
+CYL__INL void CYL__P(cross3)(const CYL__L x[3], const CYL__L y[3], CYL__L z[3])
+{
+    z[0] = x[1] * y[2] - x[2] * y[1];
+    z[1] = x[2] * y[0] - x[0] * y[2];
+    z[2] = x[0] * y[1] - x[1] * y[0];
+}
+
+/* ------------------------------------------------------------------ entry points */
+CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits);
+CYL__INL int CYL__P(derive)(CYL__P(frame) *f);
+CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f);
+
+/* The hot path: the frame from the inputs as given, one range test on derived values, and the
+   answer; whatever the test refuses (invalid input, out of range, parallel, an unknown option)
+   goes to the exact path. want: 0 occluded, 1 nearest, 2 all. */
+CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                         int want, CYL__N(hit) *hits)
+{
+    CYL__P(frame) f;
+    int i;
+    for (i = 0; i < 3; i++) {
+        f.w[i] = (CYL__L)ray->o[i] - (CYL__L)cyl->c[i];
+        f.d[i] = (CYL__L)ray->d[i];
+        f.a[i] = (CYL__L)cyl->a[i];
+    }
+    f.r = (CYL__L)cyl->r;
+    f.H = (CYL__L)cyl->h * CYL__K(0.5);
+    f.tmin = (CYL__L)ray->tmin;
+    f.tmax = (CYL__L)ray->tmax;
+    f.tlim = (CYL__L)CYL__RMAX;
+    f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX);
+    f.lo = CYL__HOT_LO;
+    f.et = f.ev = 0;
+    f.exact = 1;
+    if ((CYL__P(derive)(&f) == 0) | CYL__P(parallel)(&f) | ((opts & ~CYL__SUPPORTED) != 0u))
+        return CYL__P(cold)(ray, cyl, opts, want, hits);
+    return CYL__P(answer)(&f, opts, want, hits);
+}
+
+CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                              unsigned opts, CYL__N(hit) *hit)
+{
+    if (!ray || !cyl || !hit) return CYL_E_NULL;
+    return CYL__P(run)(ray, cyl, opts, 1, hit);
+}
+
+CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                                  unsigned opts, CYL__N(hit) hits[2])
+{
+    if (!ray || !cyl || !hits) return CYL_E_NULL;
+    return CYL__P(run)(ray, cyl, opts, 2, hits);
+}
+
+CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
+{
+    if (!ray || !cyl) return CYL_E_NULL;
+    return CYL__P(run)(ray, cyl, opts, 0, (CYL__N(hit) *)0);
+}
+
+/* ------------------------------------------------------------------ frame */
+/* Everything the decisions use, from the cross products s = a × d and m = a × w (N1), and the
+   range test (N2): 1 when every derived value is finite and normal enough for the bounds. */
+CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
+{
+    CYL__L P, ww, hi = CYL__HOT_HI;
+    CYL__P(cross3)(f->a, f->d, f->s);
+    CYL__P(cross3)(f->a, f->w, f->m);
+    f->aa = CYL__P(dot)(f->a, f->a);
+    f->dd = CYL__P(dot)(f->d, f->d);
+    f->A = CYL__P(dot)(f->s, f->s);
+    f->B = CYL__P(dot)(f->m, f->s);
+    f->r2 = f->r * f->r;
+    f->r2aa = f->r2 * f->aa;
+    f->C = CYL__P(dot)(f->m, f->m) - f->r2aa;
+    P = CYL__P(dot)(f->w, f->s);
+    f->D = f->r2 * f->A - P * P; /* B² − AC = aa·D (N3) */
+    f->z0 = CYL__P(dot)(f->a, f->w);
+    f->zeta = CYL__P(dot)(f->a, f->d);
+    f->sqaa = CYL__LSQRT(f->aa);
+    f->Ha = f->H * f->sqaa;
+    ww = CYL__P(dot)(f->w, f->w);
+    return (CYL__P(min)(CYL__P(min)(f->aa, f->dd), f->r2) >= f->lo) &
+           (f->aa + f->dd + f->r2 + ww <= hi) & (f->r > 0) & (f->Ha >= f->lo) &
+           ((f->Ha <= CYL__LMAX) | (f->H > CYL__LMAX)) & (f->tmin <= f->tmax);
+}
+
+/* ------------------------------------------------------------------ decisions */
+/* Parallel (N7): sin²(d, a) = A/(aa·dd) at most the tolerance's square. */
+CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f)
+{
+    const CYL__L p2 = (CYL__L)CYL__PARA * (CYL__L)CYL__PARA;
+    return f->A <= p2 * (f->aa * f->dd);
+}
+
+/* The wall (N3, N6): 0 the ray line misses the infinite tube, 1 a tangent contact (e within the
+   band), 2 two crossings; e = D/(r²A). */
+CYL__INL int CYL__P(classify_wall)(const CYL__P(frame) *f)
+{
+    CYL__L band = (CYL__L)CYL__TANG * (f->r2 * f->A);
+    if (f->D > band) return 2;
+    return f->D >= -band ? 1 : 0;
+}
+
+/* The two wall roots, ordered, from the stable pair (N4); a contact inside the band without a
+   real root (D <= 0) is the point of closest approach, twice. */
+CYL__INL void CYL__P(wall_roots)(const CYL__P(frame) *f, CYL__L t[2])
+{
+    CYL__L sq = CYL__LSQRT(f->aa * CYL__P(max)(f->D, 0));
+    CYL__L q = -(f->B + (f->B < 0 ? -sq : sq));
+    CYL__L t0 = q / f->A, t1 = f->D > 0 ? f->C / q : t0;
+    t[0] = CYL__P(min)(t0, t1);
+    t[1] = CYL__P(max)(t0, t1);
+}
+
+/* The slab between the cap planes, as the t interval [s[0], s[1]] the ray spends in it (N4):
+   |z0 + tζ| <= Ha. Written with ζ's sign moved to z0, so that ζ = ±0 gives ±infinity, and a ray
+   lying in a cap plane gives a NaN end, which in_slab reads as inclusive (the rim). */
+CYL__INL void CYL__P(slab)(const CYL__P(frame) *f, CYL__L s[2])
+{
+    CYL__L z = f->zeta < 0 ? -f->z0 : f->z0, az = CYL__P(abs)(f->zeta);
+    s[0] = (-f->Ha - z) / az;
+    s[1] = (f->Ha - z) / az;
+}
+
+/* The rim: is t inside the slab, ends included. */
+CYL__INL int CYL__P(in_slab)(CYL__L t, const CYL__L s[2]) { return !(t < s[0]) && !(t > s[1]); }
+
+/* The t range, ends included, and t representable in the API's type. */
+CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t)
+{
+    return !(t < f->tmin) && !(t > f->tmax) && CYL__P(abs)(t) <= f->tlim;
+}
+
+/* Which crossings the surface has in range, in t order (N4): the open tube keeps the wall
+   crossings inside the slab; the capped solid clips the wall interval with the slab, so entry
+   and exit are each the wall or a cap (watertight at the rim, a rim point is the wall). */
+CYL__INL int CYL__P(pick)(const CYL__P(frame) *f, unsigned opts, CYL__P(cross) x[2])
+{
+    CYL__L t[2], s[2];
+    CYL__P(cross) c[2];
+    unsigned tan;
+    int kind = CYL__P(classify_wall)(f), n = 0, k, nc = 0;
+    if (kind == 0 || (kind == 1 && (opts & CYL_NO_TANGENT))) return 0;
+    tan = kind == 1 ? CYL_F_TANGENT : 0u;
+    CYL__P(wall_roots)(f, t);
+    CYL__P(slab)(f, s);
+    for (k = 0; k < 2; k++) { /* k = 0 entry, 1 exit */
+        c[nc].flags = k ? CYL_F_INSIDE : 0u;
+        if (CYL__P(in_slab)(t[k], s)) {
+            c[nc].t = t[k];
+            c[nc].part = CYL_SIDE;
+            c[nc++].flags |= tan;
+        } else if ((opts & CYL_CAPS) && (k ? !(s[1] < t[0]) && t[1] > s[1]
+                                           : !(s[0] > t[1]) && t[0] < s[0])) {
+            c[nc].t = s[k];
+            c[nc++].part = (k == 0) == !(f->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH;
+        }
+    }
+    for (k = 0; k < nc; k++)
+        if (CYL__P(in_range)(f, c[k].t)) x[n++] = c[k];
+    return n;
+}
+
+/* ------------------------------------------------------------------ output and bound */
+CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x,
+                                   const CYL__L y[3]);
+CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x);
+CYL__INL void CYL__P(store)(const CYL__P(frame) *f, CYL__L t, CYL__L err, CYL__L v,
+                            const CYL__L n[3], const CYL__P(cross) *x, CYL__N(hit) *hit);
+
+/* The unit normal (N5): the wall's is y × a = |a|²·x⊥ for y = a × x (x = w + t·d), a cap's ±a;
+   turned to face the ray unless CYL_OUTWARD. */
+CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, const CYL__L y[3],
+                             unsigned opts, CYL__L n[3])
+{
+    CYL__L len, g;
+    int i;
+    if (x->part == CYL_SIDE) {
+        CYL__P(cross3)(y, f->a, n);
+        len = CYL__LSQRT(CYL__P(dot)(n, n));
+    } else {
+        g = x->part == CYL_CAP_HIGH ? 1 : -1;
+        for (i = 0; i < 3; i++) n[i] = g * f->a[i];
+        len = f->sqaa;
+    }
+    g = (!(opts & CYL_OUTWARD) && CYL__P(dot)(n, f->d) > 0) ? -1 / len : 1 / len;
+    for (i = 0; i < 3; i++) n[i] *= g;
+}
+
+/* v of a wall point (N5), kept within the tube's half height. */
+CYL__INL CYL__L CYL__P(axial_v)(const CYL__P(frame) *f, CYL__L t)
+{
+    CYL__L v = (f->z0 + t * f->zeta) / f->sqaa;
+    return CYL__P(max)(-f->H, CYL__P(min)(v, f->H));
+}
+
+CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts,
+                           CYL__N(hit) *hit)
+{
+    CYL__L y[3], n[3] = {0, 0, 0}, v, err = CYL__LINF;
+    int i;
+    for (i = 0; i < 3; i++) y[i] = f->m[i] + x->t * f->s[i]; /* a × (w + t·d) */
+    v = x->part == CYL_SIDE ? CYL__P(axial_v)(f, x->t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
+    if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, x, y, opts, n);
+    if (!(opts & CYL_NO_ERRBOUND))
+        err = x->part == CYL_SIDE ? CYL__P(bound_wall)(f, x, y) : CYL__P(bound_cap)(f, x);
+    CYL__P(store)(f, x->t, err, v, n, x, hit);
+}
+
+CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits)
+{
+    CYL__P(cross) x[2];
+    int n = CYL__P(pick)(f, opts, x), k;
+    if (want == 0) return n > 0;
+    if (want == 1) n = n > 0;
+    for (k = 0; k < n; k++) CYL__P(emit)(f, &x[k], opts, &hits[k]);
+    return n;
+}
+
+/* t_err of a wall crossing (N5): the residual F = |y|² − r²|a|² and G = y·s (half the slope) at
+   t with rounding bounds EF, EG (1-norms, standard model); the root of the same crossing is
+   within (|F| + EF)/(|G| − EG) where that is the quadratic's near branch, else within the
+   product-of-roots bound. */
+CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x,
+                                   const CYL__L y[3])
+{
+    const CYL__L u = CYL__LU;
+    CYL__L Na = CYL__P(norm1)(f->a), Ns = CYL__P(norm1)(f->s), Ny = CYL__P(norm1)(y);
+    CYL__L at = CYL__P(abs)(x->t), yy = CYL__P(dot)(y, y), F = yy - f->r2aa;
+    CYL__L G = CYL__P(dot)(y, f->s), aG = CYL__P(abs)(G);
+    CYL__L Es = 3 * u * Na * CYL__P(norm1)(f->d);
+    CYL__L Ey = 4 * u * Na * (CYL__P(norm1)(f->w) + at * CYL__P(norm1)(f->d)) + 2 * u * Ny;
+    CYL__L Fb = CYL__P(abs)(F) * (1 + 2 * u) + Ey * (2 * Ny + Ey) + 4 * u * (yy + 2 * f->r2aa);
+    CYL__L EG = Ey * Ns + (Ny + Ey) * Es + 4 * u * Ny * Ns;
+    CYL__L EA = Es * (2 * Ns + Es) + 5 * u * f->A, Ap = f->A + EA, Am = f->A - EA;
+    CYL__L Gb = aG - EG;
+    int same = (x->flags & CYL_F_TANGENT) || ((G > 0) == ((x->flags & CYL_F_INSIDE) != 0u));
+    CYL__L err;
+    if (Gb > 0 && same && Gb * Gb >= Ap * Fb) err = Fb / Gb;
+    else err = Am > 0 ? (2 * (aG + EG) + CYL__LSQRT(Ap * Fb)) / Am : CYL__LINF;
+    return err * (1 + 32 * u);
+}
+
+/* t_err of a cap crossing (N5): the plane's residual z0 + tζ ∓ Ha over |ζ|, both bounded. */
+CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x)
+{
+    const CYL__L u = CYL__LU;
+    CYL__L Na = CYL__P(norm1)(f->a), Nd = CYL__P(norm1)(f->d);
+    CYL__L g = f->z0 + x->t * f->zeta - (x->part == CYL_CAP_HIGH ? f->Ha : -f->Ha);
+    CYL__L Eg = 6 * u * (Na * (CYL__P(norm1)(f->w) + CYL__P(abs)(x->t) * Nd) + f->Ha) +
+                2 * u * CYL__P(abs)(g);
+    CYL__L den = CYL__P(abs)(f->zeta) - 4 * u * Na * Nd;
+    return den > 0 ? (CYL__P(abs)(g) + Eg) / den * (1 + 32 * u) : CYL__LINF;
+}
+
+/* Back to the caller's units and type: t, t_err and v unscaled (the exact path's frames), t_err
+   rounded up and widened by t's own rounding into R. */
+CYL__INL void CYL__P(store)(const CYL__P(frame) *f, CYL__L t, CYL__L err, CYL__L v,
+                            const CYL__L n[3], const CYL__P(cross) *x, CYL__N(hit) *hit)
+{
+    CYL__R tr;
+    int i;
+    if (f->et != 0) {
+        t = CYL__LT(scale)(t, f->et);
+        err = CYL__LT(scale)(err, f->et) * (1 + 4 * CYL__LU) + CYL__LTINY;
+        v = CYL__LT(scale)(v, f->ev);
+        v = CYL__P(max)(-f->vlim, CYL__P(min)(v, f->vlim));
+    }
+    if (!f->exact) err = CYL__LINF;
+    tr = (CYL__R)t;
+    if (sizeof(CYL__L) > sizeof(CYL__R)) { /* t rounded to R: its rounding joins the bound */
+        err = (err + CYL__P(abs)((CYL__L)tr - t)) * (1 + CYL__K(2.384185791015625e-07)) +
+              CYL__K(1.40129846432481707e-45);
+        if (err > (CYL__L)CYL__RMAX) err = CYL__LINF;
+    }
+    hit->t = tr;
+    hit->t_err = (CYL__R)err;
+    for (i = 0; i < 3; i++) hit->n[i] = (CYL__R)n[i];
+    hit->v = (CYL__R)v;
+    hit->part = x->part;
+    hit->flags = x->flags;
+}
+
+/* ------------------------------------------------------------------ the exact path */
+/* floor(log2(x)) for finite x > 0 in R, from the exponent bits (subnormals included). */
+static inline int CYL__P(expo)(CYL__R x)
+{
+    CYL__UINT b;
+    int e, shift = 0;
+    CYL__MEMCPY(&b, &x, sizeof b);
+    e = (int)((b >> (CYL__MANT - 1)) & (CYL__UINT)(2 * CYL__EBIAS + 1));
+    if (e == 0) {
+        x *= CYL__P(scale)(1, CYL__MANT);
+        CYL__MEMCPY(&b, &x, sizeof b);
+        e = (int)((b >> (CYL__MANT - 1)) & (CYL__UINT)(2 * CYL__EBIAS + 1));
+        shift = CYL__MANT;
+    }
+    return e - CYL__EBIAS - shift;
+}
+
+/* x·2^k for any k, in steps of normal powers of two: only the last step can round. */
+static inline CYL__R CYL__P(scale)(CYL__R x, int k)
+{
+    CYL__UINT b;
+    CYL__R p;
+    while (k > CYL__EBIAS || k < 1 - CYL__EBIAS) {
+        int s = k > 0 ? CYL__EBIAS : 1 - CYL__EBIAS;
+        x = CYL__P(scale)(x, s);
+        k -= s;
+    }
+    b = (CYL__UINT)(k + CYL__EBIAS) << (CYL__MANT - 1);
+    CYL__MEMCPY(&p, &b, sizeof p);
+    return x * p;
+}
+
+/* Validation in the documented order (the hot path sent what its range test refused). */
+static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
+{
+    const CYL__R *v[4] = {ray->o, ray->d, cyl->c, cyl->a};
+    int i, k, zero[4] = {1, 1, 1, 1};
+    for (k = 0; k < 4; k++)
+        for (i = 0; i < 3; i++) {
+            if (!(v[k][i] >= -CYL__RMAX && v[k][i] <= CYL__RMAX)) return CYL_E_NONFINITE;
+            if (v[k][i] < 0 || v[k][i] > 0) zero[k] = 0;
+        }
+    if (zero[1]) return CYL_E_ZERO_DIR;
+    if (zero[3]) return CYL_E_ZERO_AXIS;
+    if (!(cyl->r > 0) || !(cyl->r <= CYL__RMAX)) return CYL_E_RADIUS;
+    if (!(cyl->h > 0)) return CYL_E_HEIGHT;
+    if (!(ray->tmin <= ray->tmax)) return CYL_E_TRANGE;
+    if (opts & ~CYL__SUPPORTED) return CYL_E_OPTION;
+    return 0;
+}
+
+CYL__INL CYL__R CYL__P(amax3)(const CYL__R x[3])
+{
+    CYL__R m = 0;
+    int i;
+    for (i = 0; i < 3; i++) {
+        CYL__R y = x[i] < 0 ? -x[i] : x[i];
+        m = y > m ? y : m;
+    }
+    return m;
+}
+
+/* The frame of valid input at a scale where the hot path's arithmetic neither overflows nor
+   underflows (N1): lengths by 2^-kl, d by 2^-kd, a by 2^-ka (exact); o − c formed at the scale
+   of o and c first, so that it cannot overflow. */
+static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
+                                       const CYL__N(cylinder) *cyl)
+{
+    CYL__R oc = CYL__P(amax3)(ray->o), cc = CYL__P(amax3)(cyl->c), m0 = oc > cc ? oc : cc;
+    CYL__L wr[3], m;
+    int j = CYL__P(expo)(m0 > cyl->r ? m0 : cyl->r), kl, kd, ka, i;
+    for (i = 0; i < 3; i++)
+        wr[i] = CYL__LT(scale)((CYL__L)ray->o[i], -j) - CYL__LT(scale)((CYL__L)cyl->c[i], -j);
+    m = CYL__P(max)(CYL__P(max)(CYL__P(abs)(wr[0]), CYL__P(abs)(wr[1])), CYL__P(abs)(wr[2]));
+    m = CYL__P(max)(m, CYL__LT(scale)((CYL__L)cyl->r, -j));
+    kl = (m > 0 ? CYL__LT(expo)(m) : 0) + j;
+    kd = CYL__P(expo)(CYL__P(amax3)(ray->d));
+    ka = CYL__P(expo)(CYL__P(amax3)(cyl->a));
+    for (i = 0; i < 3; i++) {
+        f->w[i] = CYL__LT(scale)(wr[i], j - kl);
+        f->d[i] = CYL__LT(scale)((CYL__L)ray->d[i], -kd);
+        f->a[i] = CYL__LT(scale)((CYL__L)cyl->a[i], -ka);
+    }
+    f->r = CYL__LT(scale)((CYL__L)cyl->r, -kl);
+    f->H = CYL__LT(scale)((CYL__L)cyl->h, -kl - 1);
+    f->et = kl - kd;
+    f->ev = kl;
+    f->tmin = CYL__LT(scale)((CYL__L)ray->tmin, -f->et);
+    f->tmax = CYL__LT(scale)((CYL__L)ray->tmax, -f->et);
+    f->tlim = CYL__LT(scale)((CYL__L)CYL__RMAX, -f->et);
+    f->vlim = CYL__P(min)((CYL__L)cyl->h * CYL__K(0.5), (CYL__L)CYL__RMAX);
+    f->lo = CYL__COLD_LO;
+    f->exact = 1;
+}
+
+/* A ray parallel to the axis (N7): no wall; with caps, each cap crossing where the ray point
+   lies inside its disk. */
+static inline int CYL__P(answer_parallel)(const CYL__P(frame) *f, unsigned opts, int want,
+                                   CYL__N(hit) *hits)
+{
+    CYL__L s[2], y[3];
+    CYL__P(cross) x[2];
+    int n = 0, k, i;
+    if (!(opts & CYL_CAPS)) return 0;
+    CYL__P(slab)(f, s);
+    for (k = 0; k < 2; k++) {
+        for (i = 0; i < 3; i++) y[i] = f->m[i] + s[k] * f->s[i];
+        if (CYL__P(dot)(y, y) <= f->r2aa && CYL__P(in_range)(f, s[k])) {
+            x[n].t = s[k];
+            x[n].part = (k == 0) == !(f->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH;
+            x[n++].flags = CYL_F_PARALLEL | (k ? CYL_F_INSIDE : 0u);
+        }
+    }
+    if (want == 0) return n > 0;
+    if (want == 1) n = n > 0;
+    for (k = 0; k < n; k++) CYL__P(emit)(f, &x[k], opts, &hits[k]);
+    return n;
+}
+
+/* The exact path: everything the hot path's range test refused. Validates, scales, and answers
+   on the same decisions; a scene whose ratios stay outside the range even scaled (a radius
+   below 2^-300 of |o − c| in double) is answered with r raised to that limit and t_err = inf. */
+CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                           int want, CYL__N(hit) *hits)
+{
+    CYL__P(frame) f;
+    int rc = CYL__P(validate)(ray, cyl, opts);
+    if (rc) return rc;
+    CYL__P(load_scaled)(&f, ray, cyl);
+    if (!CYL__P(derive)(&f)) {
+        f.r = CYL__P(max)(f.r, CYL__LSQRT(f.lo) * 2);
+        f.H = CYL__P(max)(f.H, f.lo * 2);
+        f.exact = 0;
+        if (!CYL__P(derive)(&f)) return CYL_MISS;
+    }
+    if (CYL__P(parallel)(&f)) return CYL__P(answer_parallel)(&f, opts, want, hits);
+    return CYL__P(answer)(&f, opts, want, hits);
+}
+
+/* The cylinder from p0 (its low cap center) to p1 (high cap center); |p1 − p0| with a
+   power-of-two prescale, so it neither overflows nor underflows. NULL ends give a = 0. */
+CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p1[3], CYL__R r)
+{
+    CYL__N(cylinder) cy;
+    CYL__R m, x[3];
+    int i, k;
+    for (i = 0; i < 3; i++) {
+        cy.c[i] = p0 && p1 ? p0[i] * (CYL__R)0.5 + p1[i] * (CYL__R)0.5 : 0;
+        cy.a[i] = p0 && p1 ? p1[i] - p0[i] : 0;
+    }
+    cy.r = r;
+    m = CYL__P(amax3)(cy.a);
+    if (m > 0 && m <= CYL__RMAX) {
+        k = CYL__P(expo)(m);
+        for (i = 0; i < 3; i++) x[i] = CYL__P(scale)(cy.a[i], -k);
+        cy.h = CYL__P(scale)(CYL__RSQRT(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]), k);
+    } else {
+        cy.h = m; /* 0, or the non-finite value that intersect will report */
+    }
+    return cy;
+}
+
+#undef CYL__BODY
+#undef CYL__R
+#undef CYL__LD
+#undef CYL__L
+#undef CYL__N
+#undef CYL__P
+#undef CYL__LT
+#undef CYL__K
+#undef CYL__LTINY
+#undef CYL__LINF
+#undef CYL__TANG
+#undef CYL__PARA
+#undef CYL__UINT
+#undef CYL__MANT
+#undef CYL__EBIAS
+#undef CYL__RMAX
+#undef CYL__LMAX
+#undef CYL__LU
+#undef CYL__LSQRT
+#undef CYL__RSQRT
+#undef CYL__HOT_HI
+#undef CYL__HOT_LO
+#undef CYL__COLD_LO
+#endif /* CYL__BODY */
+
+/* NOTES (cited from the code as N1 .. N7)
+   ==========================================
+   u = 2^-24 (float), 2^-53 (double): the unit roundoff of the working type L.
+   N1. One formulation (../shared/DESIGN.md): w = o − c, s = a × d, m = a × w (cross products,
+       never projections: no cancellation for rays near the axis direction or origins far
+       along it), A = s·s, B = m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d, Ha = (h/2)|a|.
+   N2. Range: the hot path tests |a|², |d|², r², |w|² and Ha against one range instead of
+       validating 16 inputs; what fails (invalid, out of range) goes to the exact path, which
+       validates in the documented order and scales lengths, d and a by powers of two (exact,
+       so a scene scaled by 2^k gives the same bits scaled). Inside the range nothing the
+       bounds use overflows or underflows.
+   N3. Geometric discriminant B² − AC = |a|²·D, D = r²A − P², P = w·s (Ray Tracing Gems, ch. 7;
+       pbrt-v4 cylinders): no difference of large squares for far origins.
+   N4. Stable root pair q = −(B + sgn(B)√(|a|²D)), t = q/A and C/q (Numerical Recipes §5.6);
+       caps by clipping the wall interval with the slab |z0 + tζ| <= Ha (Cychosz and
+       Waggenspack, Graphics Gems IV): watertight at the rim.
+   N5. Output: v = (z0 + tζ)/|a|; the wall normal y × a = |a|²·x⊥ for y = m + t·s = a × x;
+       t_err from the residual F = |y|² − r²|a|² and G = y·s at t, with bounds EF, EG on their
+       rounding from the standard model (Higham, "Accuracy and Stability of Numerical
+       Algorithms", ch. 3), 1-norms throughout: |δs| <= 3u|a|₁|d|₁, |δy| <= 4u|a|₁(|w|₁ +
+       |t||d|₁) + 2u|y|₁. The exact f(t + δ) = f + 2gδ + Aδ²: where g has the crossing's sign
+       and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F| + EF)/(|G| − EG); else within
+       (2|g| + √(A|f|))/A. A cap: the plane's residual over |ζ| less its bound. The float API
+       computed in double adds the rounding of t to float and rounds the bound up.
+   N6. Tangent band: e = D/(r²A) within ±CYL_TANGENT_TOL. Near tangency the root is
+       ill-conditioned (a relative input change ε moves t by about √ε·r/(|d| sin)); D carries
+       an error of a few u·(1 + |o − c|/r) relative to r²A, so for far origins the band's
+       edges blur by that much.
+   N7. Parallel: A <= τ²|a|²|d|² (sin <= τ = CYL_PARALLEL_TOL). Below sin = u a half-ulp change
+       of one component of d makes the ray exactly parallel; yet a ray from the wall can cross
+       it again a few dozen radii along, a crossing its inputs determine (a × d is exact for an
+       axis-aligned a), which the rule drops: pinned by
+       test_parallel_rule_drops_secondary_ray_from_wall in tests/contract/tangent.c.
+*/
