@@ -2,6 +2,7 @@
 #   make test       the unit tests: Unity suites in every configuration (gcc, clang, C++,
 #                   ASan+UBSan), the accuracy test against the MPFR reference, the fuzz corpus and
 #                   findings replay, the README snippet; ends with one "N passed, M failed" line
+#   make test V=2   the same suite on v2/cylinder_isect.h, the rewrite growing beside v1 (below)
 #   make check      make test, then every other check (what CI runs: .ci/run): examples and the
 #                   viewer under Xvfb, cross and embedded builds under qemu, MISRA and
 #                   clang-tidy, C++ compatibility, the install test, a short fuzz run
@@ -21,6 +22,13 @@
 # only AREA's goals need. A goal installs what is missing before any rule runs:
 #   DEPS_GOALS_<area>  the goals that need mk/<area>.deps (set by the fragment, or below)
 # `make check` installs every list; scripts/install-deps.sh TIER|AREA... does the same by hand.
+#
+# V=2 (`make test V=2`, default V=1): the same `make test` suite on $(V2_DIR)/cylinder_isect.h
+# (V2_DIR ?= v2: the rewrite growing beside v1) instead of ./cylinder_isect.h, built apart in
+# build/v2 (another V2_DIR: build/v2-<its path>); runners that only make sense for v1
+# (-DCYL_NO_FAST_PATH) are left out, and tests that need CYL_PRECISE skip themselves where the
+# header defines CYL_NO_PRECISE.
+# HDR is the header under test: fragments list $(HDR), never the file name, as a prerequisite.
 
 SHELL    := /bin/bash
 CC       ?= cc
@@ -28,6 +36,26 @@ GCC      ?= gcc
 CLANG    ?= clang
 CXX_GCC  ?= g++
 PYTHON   ?= python3
+# Which header the suite tests. Under V=2 every compiler variable (GCC, CLANG, CXX_GCC, hence
+# the CFG_CC_* below) gets -iquote $(V2_DIR): #include "cylinder_isect.h" searches the
+# includer's own directory, then the -iquote directories, then -I; no directory but the root
+# holds a cylinder_isect.h, so every test, bench, fuzz and ref source finds v2's.
+V        ?= 1
+ifeq ($(V),2)
+V2_DIR   ?= v2
+V2_ABS   := $(abspath $(V2_DIR))
+# Another V2_DIR's objects go apart too (make compares times, not which header was compiled).
+BUILD    ?= build/v2$(if $(filter-out $(abspath v2),$(V2_ABS)),-$(subst /,_,$(V2_ABS:/%=%)))
+HDR      := $(V2_DIR)/cylinder_isect.h
+V2_IQUOTE := -iquote $(V2_ABS)
+override GCC     := $(GCC) $(V2_IQUOTE)
+override CLANG   := $(CLANG) $(V2_IQUOTE)
+override CXX_GCC := $(CXX_GCC) $(V2_IQUOTE)
+else ifeq ($(V),1)
+HDR      := cylinder_isect.h
+else
+$(error V=$(V): use V=1 (./cylinder_isect.h, the default) or V=2 ($$(V2_DIR)/cylinder_isect.h))
+endif
 BUILD    ?= build
 RESULTS  := $(BUILD)/results
 .DEFAULT_GOAL := test
@@ -73,7 +101,7 @@ unity: $(UNITY_C)
 # Each configuration builds every tests/test_*.c into its own runner.
 TEST_SRCS  := $(wildcard tests/test_*.c)
 TEST_NAMES := $(patsubst tests/%.c,%,$(TEST_SRCS))
-TEST_DEPS  := cylinder_isect.h $(wildcard tests/*.h)
+TEST_DEPS  := $(HDR) $(wildcard tests/*.h)
 CONFIGS    := gcc-O0 gcc-O2 clang-O0 clang-O2 cxx asan
 
 CFG_CC_gcc-O0    := $(GCC)

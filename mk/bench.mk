@@ -6,7 +6,7 @@
 #   make insn     instructions per call of every variant and set under callgrind, alone
 BENCH_BUILD  := $(BUILD)/bench
 BENCH_SRCS   := bench/eval.c bench/cases.c ref/cyl_ref.c
-BENCH_HDRS   := cylinder_isect.h bench/eval.h bench/cases.h bench/alt_formulations.h ref/cyl_ref.h
+BENCH_HDRS   := $(HDR) bench/eval.h bench/cases.h bench/alt_formulations.h ref/cyl_ref.h
 BENCH_INC    := -I. -Ibench -Iref
 BENCH_LIBS   := -lmpfr -lgmp -lm
 # The timed and the counted code are one binary: hardware sqrt and FMA (x86-64-v3, which
@@ -18,7 +18,7 @@ BENCH_RUNS   ?= 5
 INSN_N       ?= $(BENCH_N)
 REPORT_VENV  := $(BUILD)/report-venv
 # Which cylinder_isect.h the report measured (shown in REPORT.md).
-BENCH_LIB_REV ?= $(shell git log -1 --format=%h -- cylinder_isect.h 2>/dev/null)$(shell git diff --quiet -- cylinder_isect.h 2>/dev/null || echo ' + uncommitted changes')
+BENCH_LIB_REV ?= $(shell git log -1 --format=%h -- $(HDR) 2>/dev/null)$(shell git diff --quiet -- $(HDR) 2>/dev/null || echo ' + uncommitted changes')
 MATPLOTLIB   := matplotlib==3.9.2
 DEPS_GOALS_bench := report insn
 
@@ -58,7 +58,7 @@ $(BENCH_BUILD)/probe: bench/probe.c $(BENCH_SRCS) $(BENCH_HDRS)
 	$(GCC) $(BENCH_WARN) -O2 $(BENCH_INC) $< $(BENCH_SRCS) $(BENCH_LIBS) -o $@
 
 # alt_formulations.h is used by other code (the viewer): strict C with clang and strict C++.
-$(BENCH_BUILD)/alt_check.stamp: bench/alt_formulations.h cylinder_isect.h bench/bench.c bench/probe.c $(BENCH_SRCS) $(BENCH_HDRS)
+$(BENCH_BUILD)/alt_check.stamp: bench/alt_formulations.h $(HDR) bench/bench.c bench/probe.c $(BENCH_SRCS) $(BENCH_HDRS)
 	@mkdir -p $(@D)
 	echo '#include "bench/alt_formulations.h"' | $(CLANG) -x c $(WARN_C) -I. -fsyntax-only -
 	echo '#include "bench/alt_formulations.h"' | $(CXX_GCC) -x c++ $(WARN_CXX) -I. -fsyntax-only -

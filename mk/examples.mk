@@ -17,7 +17,7 @@ EX_LIBS      = $(shell pkg-config --libs $(EX_PKGS) 2>/dev/null) -lpthread -lm
 # Images do not depend on it: GCC's ISO C mode contracts no a*b+c, and fma() is exact anyway.
 EX_ARCH     ?= -march=native
 EX_INC      ?= -I. -Iexamples
-EX_HDRS     := cylinder_isect.h bench/alt_formulations.h examples/png_io.h
+EX_HDRS     := $(HDR) bench/alt_formulations.h examples/png_io.h
 EX_DEMO_PNG := $(EX_DIR)/demo.png
 EX_DEFAULT  := examples/scenes/molecule.txt
 
@@ -36,13 +36,13 @@ $(EX_DIR)/pngcmp: examples/pngcmp.c examples/png_io.h
 	$(GCC) $(EX_CFLAGS) $(EX_INC) $< $(shell pkg-config --libs libpng 2>/dev/null) -o $@
 
 # minimal.c is what users copy: gcc, clang and C++ must all take it with the strict warnings.
-$(EX_DIR)/minimal: examples/minimal.c cylinder_isect.h
+$(EX_DIR)/minimal: examples/minimal.c $(HDR)
 	@mkdir -p $(@D)
 	$(GCC) $(WARN_C) -O2 -I. $< -lm -o $@
-$(EX_DIR)/minimal-clang: examples/minimal.c cylinder_isect.h
+$(EX_DIR)/minimal-clang: examples/minimal.c $(HDR)
 	@mkdir -p $(@D)
 	$(CLANG) $(WARN_C) -O2 -I. $< -lm -o $@
-$(EX_DIR)/minimal-cxx: examples/minimal.c cylinder_isect.h
+$(EX_DIR)/minimal-cxx: examples/minimal.c $(HDR)
 	@mkdir -p $(@D)
 	$(CXX_GCC) -x c++ $(WARN_CXX) -O2 -I. $< -lm -o $@
 

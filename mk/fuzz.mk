@@ -15,7 +15,7 @@ FUZZ_DIR      := $(BUILD)/fuzz
 FUZZ_HARNESSES := fuzz_isect fuzz_grid
 FUZZ_CORPUS_fuzz_isect := fuzz/corpus
 FUZZ_CORPUS_fuzz_grid  := fuzz/corpus_grid
-FUZZ_HDRS     := cylinder_isect.h fuzz/fuzz_check.h fuzz/fuzz_grid.h fuzz/fuzz_ref.h
+FUZZ_HDRS     := $(HDR) fuzz/fuzz_check.h fuzz/fuzz_grid.h fuzz/fuzz_ref.h
 # The harness runs where it is built: a real FMA makes the library's error-free steps fast.
 # The gcc replay is built without it, so libm's fma path is checked too.
 FUZZ_ARCH     ?= -march=native
@@ -35,16 +35,16 @@ FUZZ_REF_OBJ_COV   := $(FUZZ_DIR)/cyl_ref-cov.o
 endif
 
 # The reference is another area's code: built once per flavour, not instrumented for coverage.
-$(FUZZ_DIR)/cyl_ref-san.o: ref/cyl_ref.c ref/cyl_ref.h cylinder_isect.h
+$(FUZZ_DIR)/cyl_ref-san.o: ref/cyl_ref.c ref/cyl_ref.h $(HDR)
 	@mkdir -p $(@D)
 	$(CLANG) -std=c99 -g -O1 $(FUZZ_SAN) -I. -Iref -c $< -o $@
-$(FUZZ_DIR)/cyl_ref-gcc.o: ref/cyl_ref.c ref/cyl_ref.h cylinder_isect.h
+$(FUZZ_DIR)/cyl_ref-gcc.o: ref/cyl_ref.c ref/cyl_ref.h $(HDR)
 	@mkdir -p $(@D)
 	$(GCC) -std=c99 -O2 -I. -Iref -c $< -o $@
-$(FUZZ_DIR)/cyl_ref-noprecise.o: ref/cyl_ref.c ref/cyl_ref.h cylinder_isect.h
+$(FUZZ_DIR)/cyl_ref-noprecise.o: ref/cyl_ref.c ref/cyl_ref.h $(HDR)
 	@mkdir -p $(@D)
 	$(GCC) -std=c99 -O2 -DCYL_NO_PRECISE -I. -Iref -c $< -o $@
-$(FUZZ_DIR)/cyl_ref-cov.o: ref/cyl_ref.c ref/cyl_ref.h cylinder_isect.h
+$(FUZZ_DIR)/cyl_ref-cov.o: ref/cyl_ref.c ref/cyl_ref.h $(HDR)
 	@mkdir -p $(@D)
 	$(CLANG) -std=c99 -O1 -I. -Iref -c $< -o $@
 
@@ -81,7 +81,7 @@ fuzz: fuzz-build
 fuzz-short:
 	@$(MAKE) --no-print-directory fuzz FUZZ_SECONDS=$(FUZZ_CI_SECONDS)
 
-$(FUZZ_DIR)/gen_seeds: fuzz/gen_seeds.c fuzz/fuzz_check.h cylinder_isect.h
+$(FUZZ_DIR)/gen_seeds: fuzz/gen_seeds.c fuzz/fuzz_check.h $(HDR)
 	@mkdir -p $(@D)
 	$(GCC) $(WARN_C) -O1 -I. -Ifuzz $< -lm -o $@
 fuzz-seeds: $(FUZZ_DIR)/gen_seeds

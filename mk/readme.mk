@@ -10,7 +10,7 @@ $(README_DIR)/snippet.inc: README.md scripts/sync-readme.py
 	@mkdir -p $(@D)
 	$(PYTHON) scripts/sync-readme.py --snippet README.md > $@.tmp && mv $@.tmp $@
 
-$(README_DIR)/test_readme: tests/readme/test_readme.c $(README_DIR)/snippet.inc cylinder_isect.h $(BUILD)/gcc-O0/unity.o
+$(README_DIR)/test_readme: tests/readme/test_readme.c $(README_DIR)/snippet.inc $(HDR) $(BUILD)/gcc-O0/unity.o
 	$(GCC) $(WARN_C) -Wno-format-truncation -O1 $(UNITY_FLAGS) -I. -I$(README_DIR) $< -x none $(BUILD)/gcc-O0/unity.o -lm -o $@
 
 RUNNERS += $(README_DIR)/test_readme
