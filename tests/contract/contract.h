@@ -76,6 +76,17 @@ typedef CYL(hit) Hit;
 #define T_INF ((T)INFINITY)
 #define T_NAN ((T)NAN)
 
+/* ------------------------------------------------------------------ the precise tier */
+/* No CYL_PRECISE under CYL_NO_PRECISE (v2 defines it): precise-only tests and options skip. */
+#ifdef CYL_NO_PRECISE
+#define HAVE_PRECISE 0
+#else
+#define HAVE_PRECISE 1
+#endif
+#define PRECISE_SKIP_MSG "needs CYL_PRECISE, compiled out (CYL_NO_PRECISE)"
+#define PRECISE_OR_SKIP() do { if (!HAVE_PRECISE) TEST_IGNORE_MESSAGE(PRECISE_SKIP_MSG); } while (0)
+#define NO_PRECISE_SET(opts) (!HAVE_PRECISE && ((opts) & CYL_PRECISE) != 0u)
+
 /* ------------------------------------------------------------------ named tolerances
  * Relative ones are used as TOL_x * scale, scale being the magnitude they are relative to (|t|,
  * max(|t|, r/|d|) or the scene size); a literal factor is that magnitude. T_EPS = ulp(1) = 2u. */

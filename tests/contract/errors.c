@@ -155,7 +155,15 @@ static void test_error_trange_option(void)
     {
         Hit h;
         sentinel(&h, 1);
-        EQ_INT(CYL_HIT, CYL(intersect)(&ray, &cyl, CYL_OPTIONS_ALL, &h), "CYL_OPTIONS_ALL valid");
+        /* every known bit at once; without the precise tier, all but CYL_PRECISE (which is then
+           an unknown bit: CYL_E_OPTION) */
+        if (HAVE_PRECISE) {
+            EQ_INT(CYL_HIT, CYL(intersect)(&ray, &cyl, CYL_OPTIONS_ALL, &h), "CYL_OPTIONS_ALL valid");
+        } else {
+            EXPECT_ERROR(&ray, &cyl, CYL_OPTIONS_ALL, CYL_E_OPTION, "CYL_PRECISE compiled out");
+            EQ_INT(CYL_HIT, CYL(intersect)(&ray, &cyl, CYL_OPTIONS_ALL & ~CYL_PRECISE, &h),
+                   "CYL_OPTIONS_ALL but CYL_PRECISE valid");
+        }
         EQ_INT(0, CYL_OPTIONS_ALL & 0x80u, "CYL_OPTIONS_ALL has no unknown bit");
     }
 }
