@@ -8,6 +8,7 @@
 #                   clang-tidy, C++ compatibility, the install test, a short fuzz run
 #   make demo       the examples (see mk/examples.mk)
 #   make install    the header, a pkg-config file and a CMake package (see mk/install.mk)
+#   make cost       instructions per call of v1 and v2 against the end-point routine (mk/cost.mk)
 # Area-specific targets live in mk/*.mk, each owned by one part of the project.
 #
 # The convention every fragment follows:
