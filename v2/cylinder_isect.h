@@ -230,6 +230,8 @@
    -fno-math-errno), <math.h> otherwise. */
 #if defined(__GNUC__) || defined(__clang__)
 #define CYL__MEMCPY(d, s, n) __builtin_memcpy(d, s, n)
+#define CYL__FABSF(x) __builtin_fabsf(x)
+#define CYL__FABS(x) __builtin_fabs(x)
 #ifndef CYL_SQRTF
 #define CYL_SQRTF(x) __builtin_sqrtf(x)
 #endif
@@ -237,11 +239,11 @@
 #define CYL_SQRT(x) __builtin_sqrt(x)
 #endif
 #else
+#include <math.h>
 #include <string.h>
 #define CYL__MEMCPY(d, s, n) memcpy(d, s, n)
-#if !defined(CYL_SQRTF) || !defined(CYL_SQRT)
-#include <math.h>
-#endif
+#define CYL__FABSF(x) fabsf(x)
+#define CYL__FABS(x) fabs(x)
 #ifndef CYL_SQRTF
 #define CYL_SQRTF(x) sqrtf(x)
 #endif
@@ -319,8 +321,9 @@ CYL_DEF const char *cyl_strerror(int code)
 #else /* CYL__BODY: one precision, written once */
 
 /* R's constants, and those of the working type L (the same, or double for a wide float API).
-   The range (N2): the hot path takes squared lengths, |a|² and |d|² within 2^±200 (L = double)
-   or 2^±24 (L = float); the exact path scales into it, and takes r² down to 2^-600 / 2^-48. */
+   The range (N2): the hot path takes |a|²|d|², r²|a|², Ha from 2^-300 and |a|⁴|d|²(|w|² + r²)
+   up to 2^900 (L = double; 2^-60 and 2^120 for float); the exact path scales |a|, |d| and
+   max(|w|, r) to [1, 2) and takes r²|a|² down to 2^-600 (2^-76). */
 #if CYL__MANT == 24
 #define CYL__RMAX FLT_MAX
 #define CYL__RSQRT(x) CYL_SQRTF(x)
@@ -335,8 +338,10 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LMAX DBL_MAX
 #define CYL__LU (DBL_EPSILON / 2)
 #define CYL__LSQRT(x) CYL_SQRT(x)
+#define CYL__LABS(x) CYL__FABS(x)
 #define CYL__LTINY 4.9406564584124654e-324 /* 2^-1074 */
-#define CYL__HOT_HI 1.6069380442589903e60  /* 2^200 */
+#define CYL__HOT_LO 4.9090934652977266e-91 /* 2^-300 */
+#define CYL__HOT_HI 8.452712498170644e270 /* 2^900 */
 #define CYL__COLD_LO 2.4099198651028841e-181 /* 2^-600 */
 #else
 #define CYL__L float
@@ -345,11 +350,12 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LMAX FLT_MAX
 #define CYL__LU (FLT_EPSILON / 2)
 #define CYL__LSQRT(x) CYL_SQRTF(x)
+#define CYL__LABS(x) CYL__FABSF(x)
 #define CYL__LTINY 1.40129846e-45f /* 2^-149 */
-#define CYL__HOT_HI 16777216.0f /* 2^24 */
-#define CYL__COLD_LO 3.55271368e-15f /* 2^-48 */
+#define CYL__HOT_LO 8.67361738e-19f /* 2^-60 */
+#define CYL__HOT_HI 1.32922800e36f /* 2^120 */
+#define CYL__COLD_LO 1.32348898e-23f /* 2^-76 */
 #endif
-#define CYL__HOT_LO (1 / CYL__HOT_HI)
 #define CYL__LINF (CYL__LMAX * 2)
 
 typedef struct CYL__N(ray) { CYL__R o[3], d[3], tmin, tmax; } CYL__N(ray);
@@ -360,28 +366,28 @@ typedef struct CYL__N(hit) {
     unsigned flags;
 } CYL__N(hit);
 
-/* The frame (N1): the inputs in L, possibly scaled (et, ev: t and v are 2^et and 2^ev times the
+/* The frame (N1): the inputs in L, possibly scaled (t and v are then 2^et and 2^ev times the
    frame's), and everything derived from them once. */
 typedef struct CYL__P(frame) {
-    CYL__L w[3], d[3], a[3], r, H, tmin, tmax, tlim, vlim, lo;
-    CYL__L s[3], m[3], aa, dd, A, B, C, D, r2, r2aa, z0, zeta, sqaa, Ha;
+    CYL__L w[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, tlim, vlim, lo, hi;
+    CYL__L s[3], m[3], aa, ad, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha;
     int et, ev, exact;
 } CYL__P(frame);
 
 /* One crossing of the ray with the surface. */
 typedef struct CYL__P(cross) {
-    CYL__L t;
-    int part;
+    CYL__L t, h; /* h: ∓√(|a|²D) for a wall crossing (entry −, exit +), for its normal */
+    int part, ok;
     unsigned flags;
 } CYL__P(cross);
 
 static int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                         int want, CYL__N(hit) *hits);
-static inline int CYL__P(expo)(CYL__R x);
 static inline CYL__R CYL__P(scale)(CYL__R x, int k);
+static inline CYL__R CYL__P(toward0)(CYL__R x);
 
 /* ------------------------------------------------------------------ small tools */
-CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return x < 0 ? -x : x; }
+CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return CYL__LABS(x); }
 CYL__INL CYL__L CYL__P(max)(CYL__L x, CYL__L y) { return x > y ? x : y; }
 CYL__INL CYL__L CYL__P(min)(CYL__L x, CYL__L y) { return x < y ? x : y; }
 CYL__INL CYL__L CYL__P(dot)(const CYL__L x[3], const CYL__L y[3])
@@ -421,9 +427,12 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.H = (CYL__L)cyl->h * CYL__K(0.5);
     f.tmin = (CYL__L)ray->tmin;
     f.tmax = (CYL__L)ray->tmax;
+    f.rmin = f.tmin;
+    f.rmax = f.tmax;
     f.tlim = (CYL__L)CYL__RMAX;
     f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX);
     f.lo = CYL__HOT_LO;
+    f.hi = CYL__HOT_HI;
     f.et = f.ev = 0;
     f.exact = 1;
     if ((CYL__P(derive)(&f) == 0) | CYL__P(parallel)(&f) | ((opts & ~CYL__SUPPORTED) != 0u))
@@ -453,37 +462,38 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 
 /* ------------------------------------------------------------------ frame */
 /* Everything the decisions use, from the cross products s = a × d and m = a × w (N1), and the
-   range test (N2): 1 when every derived value is finite and normal enough for the bounds. */
+   range test (N2) on derived values: |a|²|d|², r²|a|² and Ha at least lo, |a|⁴|d|²(|w|² + r²)
+   at most hi, which every NaN, infinity or zero of the inputs fails too. */
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
-    CYL__L P, ww, hi = CYL__HOT_HI;
+    CYL__L mm;
     CYL__P(cross3)(f->a, f->d, f->s);
     CYL__P(cross3)(f->a, f->w, f->m);
     f->aa = CYL__P(dot)(f->a, f->a);
-    f->dd = CYL__P(dot)(f->d, f->d);
     f->A = CYL__P(dot)(f->s, f->s);
     f->B = CYL__P(dot)(f->m, f->s);
     f->r2 = f->r * f->r;
     f->r2aa = f->r2 * f->aa;
-    f->C = CYL__P(dot)(f->m, f->m) - f->r2aa;
-    P = CYL__P(dot)(f->w, f->s);
-    f->D = f->r2 * f->A - P * P; /* B² − AC = aa·D (N3) */
+    mm = CYL__P(dot)(f->m, f->m);
+    f->C = mm - f->r2aa;
+    f->P = CYL__P(dot)(f->w, f->s);
+    f->D = f->r2 * f->A - f->P * f->P; /* B² − AC = |a|²D (N3) */
     f->z0 = CYL__P(dot)(f->a, f->w);
     f->zeta = CYL__P(dot)(f->a, f->d);
+    f->ad = f->A + f->zeta * f->zeta; /* |a|²|d|² */
     f->sqaa = CYL__LSQRT(f->aa);
     f->Ha = f->H * f->sqaa;
-    ww = CYL__P(dot)(f->w, f->w);
-    return (CYL__P(min)(CYL__P(min)(f->aa, f->dd), f->r2) >= f->lo) &
-           (f->aa + f->dd + f->r2 + ww <= hi) & (f->r > 0) & (f->Ha >= f->lo) &
+    return (CYL__P(min)(CYL__P(min)(f->r2aa, f->ad), f->Ha) >= f->lo) &
+           ((mm + f->z0 * f->z0 + f->r2aa) * f->ad <= f->hi) & (f->r > 0) &
            ((f->Ha <= CYL__LMAX) | (f->H > CYL__LMAX)) & (f->tmin <= f->tmax);
 }
 
 /* ------------------------------------------------------------------ decisions */
-/* Parallel (N7): sin²(d, a) = A/(aa·dd) at most the tolerance's square. */
+/* Parallel (N7): sin²(d, a) = A/(|a|²|d|²) at most the tolerance's square. */
 CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f)
 {
     const CYL__L p2 = (CYL__L)CYL__PARA * (CYL__L)CYL__PARA;
-    return f->A <= p2 * (f->aa * f->dd);
+    return f->A <= p2 * f->ad;
 }
 
 /* The wall (N3, N6): 0 the ray line misses the infinite tube, 1 a tangent contact (e within the
@@ -496,14 +506,15 @@ CYL__INL int CYL__P(classify_wall)(const CYL__P(frame) *f)
 }
 
 /* The two wall roots, ordered, from the stable pair (N4); a contact inside the band without a
-   real root (D <= 0) is the point of closest approach, twice. */
-CYL__INL void CYL__P(wall_roots)(const CYL__P(frame) *f, CYL__L t[2])
+   real root (D <= 0) is the point of closest approach, twice. Returns √(|a|²D). */
+CYL__INL CYL__L CYL__P(wall_roots)(const CYL__P(frame) *f, CYL__L t[2])
 {
     CYL__L sq = CYL__LSQRT(f->aa * CYL__P(max)(f->D, 0));
     CYL__L q = -(f->B + (f->B < 0 ? -sq : sq));
     CYL__L t0 = q / f->A, t1 = f->D > 0 ? f->C / q : t0;
     t[0] = CYL__P(min)(t0, t1);
     t[1] = CYL__P(max)(t0, t1);
+    return sq;
 }
 
 /* The slab between the cap planes, as the t interval [s[0], s[1]] the ray spends in it (N4):
@@ -519,65 +530,70 @@ CYL__INL void CYL__P(slab)(const CYL__P(frame) *f, CYL__L s[2])
 /* The rim: is t inside the slab, ends included. */
 CYL__INL int CYL__P(in_slab)(CYL__L t, const CYL__L s[2]) { return !(t < s[0]) && !(t > s[1]); }
 
-/* The t range, ends included, and t representable in the API's type. */
+/* The t range, ends included, and t representable in the API's type (a test the double API's
+   unscaled frame never needs). */
 CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t)
 {
-    return !(t < f->tmin) && !(t > f->tmax) && CYL__P(abs)(t) <= f->tlim;
+    int rep = (sizeof(CYL__L) == sizeof(CYL__R) && f->et == 0) || CYL__P(abs)(t) <= f->tlim;
+    return !(t < f->tmin) && !(t > f->tmax) && rep;
 }
 
-/* Which crossings the surface has in range, in t order (N4): the open tube keeps the wall
-   crossings inside the slab; the capped solid clips the wall interval with the slab, so entry
-   and exit are each the wall or a cap (watertight at the rim, a rim point is the wall). */
-CYL__INL int CYL__P(pick)(const CYL__P(frame) *f, unsigned opts, CYL__P(cross) x[2])
+/* Crossing k (0 entry, 1 exit) of the wall roots t with the slab s (N4): the open tube keeps a
+   wall crossing inside the slab; the capped solid clips the wall interval with the slab, so
+   that entry and exit are each the wall or a cap (watertight at the rim; a rim point is the
+   wall). ok: it exists and lies in the t range. */
+CYL__INL CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, int k,
+                                        const CYL__L t[2], const CYL__L s[2], CYL__L sq,
+                                        unsigned tan)
 {
-    CYL__L t[2], s[2];
-    CYL__P(cross) c[2];
-    unsigned tan;
-    int kind = CYL__P(classify_wall)(f), n = 0, k, nc = 0;
-    if (kind == 0 || (kind == 1 && (opts & CYL_NO_TANGENT))) return 0;
-    tan = kind == 1 ? CYL_F_TANGENT : 0u;
-    CYL__P(wall_roots)(f, t);
-    CYL__P(slab)(f, s);
-    for (k = 0; k < 2; k++) { /* k = 0 entry, 1 exit */
-        c[nc].flags = k ? CYL_F_INSIDE : 0u;
-        if (CYL__P(in_slab)(t[k], s)) {
-            c[nc].t = t[k];
-            c[nc].part = CYL_SIDE;
-            c[nc++].flags |= tan;
-        } else if ((opts & CYL_CAPS) && (k ? !(s[1] < t[0]) && t[1] > s[1]
-                                           : !(s[0] > t[1]) && t[0] < s[0])) {
-            c[nc].t = s[k];
-            c[nc++].part = (k == 0) == !(f->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH;
-        }
+    CYL__P(cross) x;
+    x.t = t[k];
+    x.h = k ? sq : -sq;
+    x.part = CYL_SIDE;
+    x.flags = (k ? CYL_F_INSIDE : 0u) | tan;
+    x.ok = CYL__P(in_slab)(x.t, s);
+    if (!x.ok && (opts & CYL_CAPS) &&
+        (k ? t[1] > s[1] && !(s[1] < t[0]) : t[0] < s[0] && !(s[0] > t[1]))) {
+        x.t = s[k];
+        x.part = (k == 0) == !(f->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH;
+        x.flags &= ~CYL_F_TANGENT;
+        x.ok = 1;
     }
-    for (k = 0; k < nc; k++)
-        if (CYL__P(in_range)(f, c[k].t)) x[n++] = c[k];
-    return n;
+    x.ok = x.ok && CYL__P(in_range)(f, x.t);
+    return x;
 }
 
 /* ------------------------------------------------------------------ output and bound */
-CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x,
-                                   const CYL__L y[3]);
+CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x);
 CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x);
 CYL__INL void CYL__P(store)(const CYL__P(frame) *f, CYL__L t, CYL__L err, CYL__L v,
                             const CYL__L n[3], const CYL__P(cross) *x, CYL__N(hit) *hit);
 
-/* The unit normal (N5): the wall's is y × a = |a|²·x⊥ for y = a × x (x = w + t·d), a cap's ±a;
-   turned to face the ray unless CYL_OUTWARD. */
-CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, const CYL__L y[3],
-                             unsigned opts, CYL__L n[3])
+/* The unit normal (N5). The wall's outward one is y × a at the crossing, which from the roots
+   is P|a|²·s ∓ √(|a|²D)·(a × s) (entry −, exit +): no cancellation for far origins. A cap's is
+   ±a. The ray-facing one is the outward one turned at an exit (CYL_F_INSIDE). */
+CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts,
+                             CYL__L n[3])
 {
-    CYL__L len, g;
+    CYL__L as[3], len, g;
     int i;
     if (x->part == CYL_SIDE) {
-        CYL__P(cross3)(y, f->a, n);
-        len = CYL__LSQRT(CYL__P(dot)(n, n));
+        CYL__P(cross3)(f->a, f->s, as);
+        g = f->P * f->aa;
+        for (i = 0; i < 3; i++) n[i] = g * f->s[i] - x->h * as[i];
+        len = CYL__P(dot)(n, n);
+        if (!(len >= CYL__LTINY * CYL__K(4503599627370496.0) && len <= CYL__LMAX * CYL__LU)) {
+            g = 1 / CYL__P(max)(CYL__P(max)(CYL__P(abs)(n[0]), CYL__P(abs)(n[1])), CYL__P(abs)(n[2]));
+            for (i = 0; i < 3; i++) n[i] *= g; /* |n|² would leave the normal range */
+            len = CYL__P(dot)(n, n);
+        }
+        len = CYL__LSQRT(len);
     } else {
         g = x->part == CYL_CAP_HIGH ? 1 : -1;
         for (i = 0; i < 3; i++) n[i] = g * f->a[i];
         len = f->sqaa;
     }
-    g = (!(opts & CYL_OUTWARD) && CYL__P(dot)(n, f->d) > 0) ? -1 / len : 1 / len;
+    g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 / len : 1 / len;
     for (i = 0; i < 3; i++) n[i] *= g;
 }
 
@@ -591,45 +607,59 @@ CYL__INL CYL__L CYL__P(axial_v)(const CYL__P(frame) *f, CYL__L t)
 CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts,
                            CYL__N(hit) *hit)
 {
-    CYL__L y[3], n[3] = {0, 0, 0}, v, err = CYL__LINF;
-    int i;
-    for (i = 0; i < 3; i++) y[i] = f->m[i] + x->t * f->s[i]; /* a × (w + t·d) */
+    CYL__L n[3] = {0, 0, 0}, v, err = CYL__LINF;
     v = x->part == CYL_SIDE ? CYL__P(axial_v)(f, x->t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
-    if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, x, y, opts, n);
+    if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, x, opts, n);
     if (!(opts & CYL_NO_ERRBOUND))
-        err = x->part == CYL_SIDE ? CYL__P(bound_wall)(f, x, y) : CYL__P(bound_cap)(f, x);
+        err = x->part == CYL_SIDE ? CYL__P(bound_wall)(f, x) : CYL__P(bound_cap)(f, x);
     CYL__P(store)(f, x->t, err, v, n, x, hit);
 }
 
+/* The answer on a frame: the crossings in t order, each emitted as it is found; occluded and
+   intersect stop at the first one in range. */
 CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits)
 {
-    CYL__P(cross) x[2];
-    int n = CYL__P(pick)(f, opts, x), k;
-    if (want == 0) return n > 0;
-    if (want == 1) n = n > 0;
-    for (k = 0; k < n; k++) CYL__P(emit)(f, &x[k], opts, &hits[k]);
+    CYL__L t[2], s[2], sq;
+    CYL__P(cross) x;
+    int kind = CYL__P(classify_wall)(f), n = 0, k;
+    if (kind == 0 || (kind == 1 && (opts & CYL_NO_TANGENT))) return 0;
+    sq = CYL__P(wall_roots)(f, t);
+    CYL__P(slab)(f, s);
+    for (k = 0; k < 2; k++) {
+        x = CYL__P(crossing)(f, opts, k, t, s, sq, kind == 1 ? CYL_F_TANGENT : 0u);
+        if (!x.ok) continue;
+        if (want == 0) return 1;
+        CYL__P(emit)(f, &x, opts, &hits[n++]);
+        if (want == 1) break;
+    }
     return n;
 }
 
 /* t_err of a wall crossing (N5): the residual F = |y|² − r²|a|² and G = y·s (half the slope) at
-   t with rounding bounds EF, EG (1-norms, standard model); the root of the same crossing is
-   within (|F| + EF)/(|G| − EG) where that is the quadratic's near branch, else within the
-   product-of-roots bound. */
-CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x,
-                                   const CYL__L y[3])
+   t, y = m + t·s, with rounding bounds EF, EG (1-norms, standard model); the root of the same
+   crossing is within (|F| + EF)/(|G| − EG) where that is the quadratic's near branch, else
+   within the product-of-roots bound. */
+CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x)
 {
     const CYL__L u = CYL__LU;
-    CYL__L Na = CYL__P(norm1)(f->a), Ns = CYL__P(norm1)(f->s), Ny = CYL__P(norm1)(y);
-    CYL__L at = CYL__P(abs)(x->t), yy = CYL__P(dot)(y, y), F = yy - f->r2aa;
-    CYL__L G = CYL__P(dot)(y, f->s), aG = CYL__P(abs)(G);
-    CYL__L Es = 3 * u * Na * CYL__P(norm1)(f->d);
-    CYL__L Ey = 4 * u * Na * (CYL__P(norm1)(f->w) + at * CYL__P(norm1)(f->d)) + 2 * u * Ny;
-    CYL__L Fb = CYL__P(abs)(F) * (1 + 2 * u) + Ey * (2 * Ny + Ey) + 4 * u * (yy + 2 * f->r2aa);
-    CYL__L EG = Ey * Ns + (Ny + Ey) * Es + 4 * u * Ny * Ns;
-    CYL__L EA = Es * (2 * Ns + Es) + 5 * u * f->A, Ap = f->A + EA, Am = f->A - EA;
-    CYL__L Gb = aG - EG;
-    int same = (x->flags & CYL_F_TANGENT) || ((G > 0) == ((x->flags & CYL_F_INSIDE) != 0u));
-    CYL__L err;
+    CYL__L y[3], Ny, yy, F, G, aG, Es, Ey, Fb, EG, EA, Ap, Am, Gb, err;
+    CYL__L Na = CYL__P(norm1)(f->a), Nd = CYL__P(norm1)(f->d), Ns = CYL__P(norm1)(f->s);
+    int i, same;
+    for (i = 0; i < 3; i++) y[i] = f->m[i] + x->t * f->s[i];
+    Ny = CYL__P(norm1)(y);
+    yy = CYL__P(dot)(y, y);
+    F = yy - f->r2aa;
+    G = CYL__P(dot)(y, f->s);
+    aG = CYL__P(abs)(G);
+    Es = 3 * u * Na * Nd;
+    Ey = 4 * u * Na * (CYL__P(norm1)(f->w) + CYL__P(abs)(x->t) * Nd) + 2 * u * Ny;
+    Fb = CYL__P(abs)(F) * (1 + 2 * u) + Ey * (2 * Ny + Ey) + 4 * u * (yy + 2 * f->r2aa);
+    EG = Ey * Ns + (Ny + Ey) * Es + 4 * u * Ny * Ns;
+    EA = Es * (2 * Ns + Es) + 5 * u * f->A;
+    Ap = f->A + EA;
+    Am = f->A - EA;
+    Gb = aG - EG;
+    same = (x->flags & CYL_F_TANGENT) || ((G > 0) == ((x->flags & CYL_F_INSIDE) != 0u));
     if (Gb > 0 && same && Gb * Gb >= Ap * Fb) err = Fb / Gb;
     else err = Am > 0 ? (2 * (aG + EG) + CYL__LSQRT(Ap * Fb)) / Am : CYL__LINF;
     return err * (1 + 32 * u);
@@ -647,30 +677,33 @@ CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x
     return den > 0 ? (CYL__P(abs)(g) + Eg) / den * (1 + 32 * u) : CYL__LINF;
 }
 
-/* Back to the caller's units and type: t, t_err and v unscaled (the exact path's frames), t_err
-   rounded up and widened by t's own rounding into R. */
+/* Back to the caller's units and type: t, t_err and v unscaled (the exact path's frames), t
+   kept in the caller's range, t_err widened by t's own rounding into R and rounded up, v kept
+   within h/2 after its rounding into R. */
 CYL__INL void CYL__P(store)(const CYL__P(frame) *f, CYL__L t, CYL__L err, CYL__L v,
                             const CYL__L n[3], const CYL__P(cross) *x, CYL__N(hit) *hit)
 {
-    CYL__R tr;
+    CYL__R tr, vr;
     int i;
-    if (f->et != 0) {
-        t = CYL__LT(scale)(t, f->et);
-        err = CYL__LT(scale)(err, f->et) * (1 + 4 * CYL__LU) + CYL__LTINY;
-        v = CYL__LT(scale)(v, f->ev);
-        v = CYL__P(max)(-f->vlim, CYL__P(min)(v, f->vlim));
+    if ((f->et | f->ev) != 0) {
+        CYL__L t0 = CYL__LT(scale)(t, f->et);
+        t = CYL__P(max)(f->rmin, CYL__P(min)(t0, f->rmax));
+        err = CYL__LT(scale)(err, f->et) + CYL__LTINY + CYL__P(abs)(t - t0);
+        v = CYL__P(max)(-f->vlim, CYL__P(min)(CYL__LT(scale)(v, f->ev), f->vlim));
     }
     if (!f->exact) err = CYL__LINF;
     tr = (CYL__R)t;
+    vr = (CYL__R)v;
     if (sizeof(CYL__L) > sizeof(CYL__R)) { /* t rounded to R: its rounding joins the bound */
         err = (err + CYL__P(abs)((CYL__L)tr - t)) * (1 + CYL__K(2.384185791015625e-07)) +
               CYL__K(1.40129846432481707e-45);
         if (err > (CYL__L)CYL__RMAX) err = CYL__LINF;
+        if (CYL__P(abs)((CYL__L)vr) > f->vlim) vr = CYL__P(toward0)(vr);
     }
     hit->t = tr;
     hit->t_err = (CYL__R)err;
     for (i = 0; i < 3; i++) hit->n[i] = (CYL__R)n[i];
-    hit->v = (CYL__R)v;
+    hit->v = vr;
     hit->part = x->part;
     hit->flags = x->flags;
 }
@@ -705,6 +738,16 @@ static inline CYL__R CYL__P(scale)(CYL__R x, int k)
     b = (CYL__UINT)(k + CYL__EBIAS) << (CYL__MANT - 1);
     CYL__MEMCPY(&p, &b, sizeof p);
     return x * p;
+}
+
+/* The neighbour of x toward zero in R (x finite, nonzero). */
+static inline CYL__R CYL__P(toward0)(CYL__R x)
+{
+    CYL__UINT b;
+    CYL__MEMCPY(&b, &x, sizeof b);
+    b -= 1u;
+    CYL__MEMCPY(&x, &b, sizeof x);
+    return x;
 }
 
 /* Validation in the documented order (the hot path sent what its range test refused). */
@@ -765,32 +808,38 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     f->tmin = CYL__LT(scale)((CYL__L)ray->tmin, -f->et);
     f->tmax = CYL__LT(scale)((CYL__L)ray->tmax, -f->et);
     f->tlim = CYL__LT(scale)((CYL__L)CYL__RMAX, -f->et);
+    f->rmin = (CYL__L)ray->tmin;
+    f->rmax = (CYL__L)ray->tmax;
     f->vlim = CYL__P(min)((CYL__L)cyl->h * CYL__K(0.5), (CYL__L)CYL__RMAX);
+    if (sizeof(CYL__L) == sizeof(CYL__R) && f->vlim * 2 > (CYL__L)cyl->h) /* h/2 rounded up */
+        f->vlim = (CYL__L)CYL__P(toward0)((CYL__R)f->vlim);
     f->lo = CYL__COLD_LO;
+    f->hi = CYL__HOT_HI;
     f->exact = 1;
 }
 
 /* A ray parallel to the axis (N7): no wall; with caps, each cap crossing where the ray point
    lies inside its disk. */
 static inline int CYL__P(answer_parallel)(const CYL__P(frame) *f, unsigned opts, int want,
-                                   CYL__N(hit) *hits)
+                                          CYL__N(hit) *hits)
 {
     CYL__L s[2], y[3];
-    CYL__P(cross) x[2];
+    CYL__P(cross) x;
     int n = 0, k, i;
     if (!(opts & CYL_CAPS)) return 0;
     CYL__P(slab)(f, s);
     for (k = 0; k < 2; k++) {
         for (i = 0; i < 3; i++) y[i] = f->m[i] + s[k] * f->s[i];
-        if (CYL__P(dot)(y, y) <= f->r2aa && CYL__P(in_range)(f, s[k])) {
-            x[n].t = s[k];
-            x[n].part = (k == 0) == !(f->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH;
-            x[n++].flags = CYL_F_PARALLEL | (k ? CYL_F_INSIDE : 0u);
-        }
+        if (!(CYL__P(dot)(y, y) <= f->r2aa) || !CYL__P(in_range)(f, s[k])) continue;
+        if (want == 0) return 1;
+        x.t = s[k];
+        x.h = 0;
+        x.part = (k == 0) == !(f->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH;
+        x.ok = 1;
+        x.flags = CYL_F_PARALLEL | (k ? CYL_F_INSIDE : 0u);
+        CYL__P(emit)(f, &x, opts, &hits[n++]);
+        if (want == 1) break;
     }
-    if (want == 0) return n > 0;
-    if (want == 1) n = n > 0;
-    for (k = 0; k < n; k++) CYL__P(emit)(f, &x[k], opts, &hits[k]);
     return n;
 }
 
@@ -856,6 +905,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__LMAX
 #undef CYL__LU
 #undef CYL__LSQRT
+#undef CYL__LABS
 #undef CYL__RSQRT
 #undef CYL__HOT_HI
 #undef CYL__HOT_LO
