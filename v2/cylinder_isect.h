@@ -107,7 +107,8 @@
      CYL_PARALLEL_TOLF     2^-24 = u (float)            parallel bound on sin(angle)
      CYL_PARALLEL_TOL      2^-53 = u (double)
      CYL_HEADER_FILENAME   "cylinder_isect.h"           how this file includes itself
-   Removed in v2 (#error says so): CYL_NO_FAST_PATH, CYL_INTERNAL, CYL_FMA, CYL_FMAF.
+     CYL_FMAF, CYL_FMA     __builtin_fma[f], else fma[f] fused multiply-add of the exact path only
+   Removed in v2 (#error says so): CYL_NO_FAST_PATH, CYL_INTERNAL.
 
    ACCURACY
    ========
@@ -144,9 +145,6 @@
 #endif
 #if defined(CYL_INTERNAL)
 #error "cylinder_isect.h: CYL_INTERNAL is gone in v2: internal functions follow CYL_DEF's call site; remove it"
-#endif
-#if defined(CYL_FMA) || defined(CYL_FMAF)
-#error "cylinder_isect.h: CYL_FMA/CYL_FMAF are gone in v2: the default tier uses no fma; remove them"
 #endif
 /* v2 has no certified tier yet: CYL_PRECISE is an unknown bit (issue 29 adds it). */
 #ifndef CYL_NO_PRECISE
@@ -238,6 +236,12 @@
 #ifndef CYL_SQRT
 #define CYL_SQRT(x) __builtin_sqrt(x)
 #endif
+#ifndef CYL_FMAF
+#define CYL_FMAF(a, b, c) __builtin_fmaf(a, b, c)
+#endif
+#ifndef CYL_FMA
+#define CYL_FMA(a, b, c) __builtin_fma(a, b, c)
+#endif
 #else
 #include <math.h>
 #include <string.h>
@@ -249,6 +253,12 @@
 #endif
 #ifndef CYL_SQRT
 #define CYL_SQRT(x) sqrt(x)
+#endif
+#ifndef CYL_FMAF
+#define CYL_FMAF(a, b, c) fmaf(a, b, c)
+#endif
+#ifndef CYL_FMA
+#define CYL_FMA(a, b, c) fma(a, b, c)
 #endif
 #endif
 
@@ -339,6 +349,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LU (DBL_EPSILON / 2)
 #define CYL__LSQRT(x) CYL_SQRT(x)
 #define CYL__LABS(x) CYL__FABS(x)
+#define CYL__LFMA(a, b, c) CYL_FMA(a, b, c)
 #define CYL__LTINY 4.9406564584124654e-324 /* 2^-1074 */
 #define CYL__HOT_LO 4.9090934652977266e-91 /* 2^-300 */
 #define CYL__HOT_HI 8.452712498170644e270 /* 2^900 */
@@ -351,6 +362,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LU (FLT_EPSILON / 2)
 #define CYL__LSQRT(x) CYL_SQRTF(x)
 #define CYL__LABS(x) CYL__FABSF(x)
+#define CYL__LFMA(a, b, c) CYL_FMAF(a, b, c)
 #define CYL__LTINY 1.40129846e-45f /* 2^-149 */
 #define CYL__HOT_LO 8.67361738e-19f /* 2^-60 */
 #define CYL__HOT_HI 1.32922800e36f /* 2^120 */
@@ -370,8 +382,8 @@ typedef struct CYL__N(hit) {
    frame's), and everything derived from them once. */
 typedef struct CYL__P(frame) {
     CYL__L w[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, tlim, vlim, lo, hi;
-    CYL__L s[3], m[3], aa, ad, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha;
-    int et, ev, exact;
+    CYL__L s[3], m[3], aa, ad, aww, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha;
+    int et, ev, exact, kahan;
 } CYL__P(frame);
 
 /* One crossing of the ray with the surface. */
@@ -394,21 +406,31 @@ CYL__INL CYL__L CYL__P(dot)(const CYL__L x[3], const CYL__L y[3])
 {
     return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
 }
-CYL__INL CYL__L CYL__P(norm1)(const CYL__L x[3])
-{
-    return CYL__P(abs)(x[0]) + CYL__P(abs)(x[1]) + CYL__P(abs)(x[2]);
-}
 CYL__INL void CYL__P(cross3)(const CYL__L x[3], const CYL__L y[3], CYL__L z[3])
 {
     z[0] = x[1] * y[2] - x[2] * y[1];
     z[1] = x[2] * y[0] - x[0] * y[2];
     z[2] = x[0] * y[1] - x[1] * y[0];
 }
+/* ab − cd within 2u of itself (Kahan's algorithm with FMA; Jeannerod, Louvet, Muller 2013). */
+CYL__INL CYL__L CYL__P(dop)(CYL__L a, CYL__L b, CYL__L c, CYL__L d)
+{
+    CYL__L w = c * d;
+    return CYL__LFMA(a, b, -w) + CYL__LFMA(-c, d, w);
+}
+/* x × y with each component within 2u of itself (the exact path's: N1). */
+CYL__INL void CYL__P(cross_exact)(const CYL__L x[3], const CYL__L y[3], CYL__L z[3])
+{
+    z[0] = CYL__P(dop)(x[1], y[2], x[2], y[1]);
+    z[1] = CYL__P(dop)(x[2], y[0], x[0], y[2]);
+    z[2] = CYL__P(dop)(x[0], y[1], x[1], y[0]);
+}
 
 /* ------------------------------------------------------------------ entry points */
 CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits);
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f);
 CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f);
+CYL__INL int CYL__P(steep)(const CYL__P(frame) *f);
 
 /* The hot path: the frame from the inputs as given, one range test on derived values, and the
    answer; whatever the test refuses (invalid input, out of range, parallel, an unknown option)
@@ -435,7 +457,9 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.hi = CYL__HOT_HI;
     f.et = f.ev = 0;
     f.exact = 1;
-    if ((CYL__P(derive)(&f) == 0) | CYL__P(parallel)(&f) | ((opts & ~CYL__SUPPORTED) != 0u))
+    f.kahan = 0;
+    if ((CYL__P(derive)(&f) == 0) | CYL__P(parallel)(&f) | CYL__P(steep)(&f) |
+        ((opts & ~CYL__SUPPORTED) != 0u))
         return CYL__P(cold)(ray, cyl, opts, want, hits);
     return CYL__P(answer)(&f, opts, want, hits);
 }
@@ -467,8 +491,13 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
     CYL__L mm;
-    CYL__P(cross3)(f->a, f->d, f->s);
-    CYL__P(cross3)(f->a, f->w, f->m);
+    if (f->kahan) {
+        CYL__P(cross_exact)(f->a, f->d, f->s);
+        CYL__P(cross_exact)(f->a, f->w, f->m);
+    } else {
+        CYL__P(cross3)(f->a, f->d, f->s);
+        CYL__P(cross3)(f->a, f->w, f->m);
+    }
     f->aa = CYL__P(dot)(f->a, f->a);
     f->A = CYL__P(dot)(f->s, f->s);
     f->B = CYL__P(dot)(f->m, f->s);
@@ -481,10 +510,11 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     f->z0 = CYL__P(dot)(f->a, f->w);
     f->zeta = CYL__P(dot)(f->a, f->d);
     f->ad = f->A + f->zeta * f->zeta; /* |a|²|d|² */
+    f->aww = mm + f->z0 * f->z0;      /* |a|²|w|² */
     f->sqaa = CYL__LSQRT(f->aa);
     f->Ha = f->H * f->sqaa;
     return (CYL__P(min)(CYL__P(min)(f->r2aa, f->ad), f->Ha) >= f->lo) &
-           ((mm + f->z0 * f->z0 + f->r2aa) * f->ad <= f->hi) & (f->r > 0) &
+           ((f->aww + f->r2aa) * f->ad <= f->hi) & (f->r > 0) &
            ((f->Ha <= CYL__LMAX) | (f->H > CYL__LMAX)) & (f->tmin <= f->tmax);
 }
 
@@ -496,6 +526,14 @@ CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f)
     return f->A <= p2 * f->ad;
 }
 
+/* A ray within 2^-8 of the axis' direction, where the plain s = a × d of inputs in the working
+   type loses log2(1/sin) bits, which the wall decision inherits as u·|w|/(r sin) of e: the
+   exact path forms it with FMA (N1). Float inputs in double give exact products. */
+CYL__INL int CYL__P(steep)(const CYL__P(frame) *f)
+{
+    return sizeof(CYL__L) == sizeof(CYL__R) && 65536 * f->A < f->ad;
+}
+
 /* The wall (N3, N6): 0 the ray line misses the infinite tube, 1 a tangent contact (e within the
    band), 2 two crossings; e = D/(r²A). */
 CYL__INL int CYL__P(classify_wall)(const CYL__P(frame) *f)
@@ -505,26 +543,33 @@ CYL__INL int CYL__P(classify_wall)(const CYL__P(frame) *f)
     return f->D >= -band ? 1 : 0;
 }
 
-/* The two wall roots, ordered, from the stable pair (N4); a contact inside the band without a
-   real root (D <= 0) is the point of closest approach, twice. Returns √(|a|²D). */
+/* The two wall roots in t order from the stable pair (N4): with q = −(B + sgn(B)√(|a|²D)),
+   q² >= AC, so B's sign orders q/A and C/q. A contact inside the band without a real root
+   (D <= 0) is the point of closest approach, twice. Returns √(|a|²D). */
 CYL__INL CYL__L CYL__P(wall_roots)(const CYL__P(frame) *f, CYL__L t[2])
 {
-    CYL__L sq = CYL__LSQRT(f->aa * CYL__P(max)(f->D, 0));
-    CYL__L q = -(f->B + (f->B < 0 ? -sq : sq));
-    CYL__L t0 = q / f->A, t1 = f->D > 0 ? f->C / q : t0;
-    t[0] = CYL__P(min)(t0, t1);
-    t[1] = CYL__P(max)(t0, t1);
+    CYL__L sq = CYL__LSQRT(f->aa * CYL__P(max)(f->D, 0)), q;
+    if (f->B < 0) {
+        q = sq - f->B;
+        t[0] = f->C / q;
+        t[1] = q / f->A;
+    } else {
+        q = -(f->B + sq);
+        t[0] = q / f->A;
+        t[1] = f->C / q;
+    }
+    if (!(f->D > 0)) t[0] = t[1] = -f->B / f->A;
     return sq;
 }
 
 /* The slab between the cap planes, as the t interval [s[0], s[1]] the ray spends in it (N4):
-   |z0 + tζ| <= Ha. Written with ζ's sign moved to z0, so that ζ = ±0 gives ±infinity, and a ray
-   lying in a cap plane gives a NaN end, which in_slab reads as inclusive (the rim). */
+   |z0 + tζ| <= Ha. ζ = ±0 gives (−∞, ∞) or an empty interval; a ray lying in a cap plane gives
+   NaN ends, which in_slab reads as inclusive (the rim belongs to the surface). */
 CYL__INL void CYL__P(slab)(const CYL__P(frame) *f, CYL__L s[2])
 {
-    CYL__L z = f->zeta < 0 ? -f->z0 : f->z0, az = CYL__P(abs)(f->zeta);
-    s[0] = (-f->Ha - z) / az;
-    s[1] = (f->Ha - z) / az;
+    CYL__L p0 = (-f->Ha - f->z0) / f->zeta, p1 = (f->Ha - f->z0) / f->zeta;
+    s[0] = CYL__P(min)(p0, p1);
+    s[1] = CYL__P(max)(p0, p1);
 }
 
 /* The rim: is t inside the slab, ends included. */
@@ -636,26 +681,27 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
 }
 
 /* t_err of a wall crossing (N5): the residual F = |y|² − r²|a|² and G = y·s (half the slope) at
-   t, y = m + t·s, with rounding bounds EF, EG (1-norms, standard model); the root of the same
-   crossing is within (|F| + EF)/(|G| − EG) where that is the quadratic's near branch, else
-   within the product-of-roots bound. */
+   t, y = m + t·s, with bounds EF, EG on their rounding (standard model, 2-norms: a cross
+   product's componentwise error sums to at most γ2·√6·|x||z|); the root of the same crossing
+   is within (|F| + EF)/(|G| − EG) where that is the quadratic's near branch, else within the
+   product-of-roots bound. */
 CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x)
 {
     const CYL__L u = CYL__LU;
-    CYL__L y[3], Ny, yy, F, G, aG, Es, Ey, Fb, EG, EA, Ap, Am, Gb, err;
-    CYL__L Na = CYL__P(norm1)(f->a), Nd = CYL__P(norm1)(f->d), Ns = CYL__P(norm1)(f->s);
+    CYL__L y[3], yy, F, G, aG, ny, ns, Es, Ey, Fb, EG, EA, Ap, Am, Gb, err;
     int i, same;
     for (i = 0; i < 3; i++) y[i] = f->m[i] + x->t * f->s[i];
-    Ny = CYL__P(norm1)(y);
     yy = CYL__P(dot)(y, y);
     F = yy - f->r2aa;
     G = CYL__P(dot)(y, f->s);
     aG = CYL__P(abs)(G);
-    Es = 3 * u * Na * Nd;
-    Ey = 4 * u * Na * (CYL__P(norm1)(f->w) + CYL__P(abs)(x->t) * Nd) + 2 * u * Ny;
-    Fb = CYL__P(abs)(F) * (1 + 2 * u) + Ey * (2 * Ny + Ey) + 4 * u * (yy + 2 * f->r2aa);
-    EG = Ey * Ns + (Ny + Ey) * Es + 4 * u * Ny * Ns;
-    EA = Es * (2 * Ns + Es) + 5 * u * f->A;
+    ny = CYL__LSQRT(yy);
+    ns = CYL__LSQRT(f->A);
+    Es = 5 * u * CYL__LSQRT(f->ad);
+    Ey = CYL__K(7.5) * u * CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * (Es + 4 * u * ns) + 2 * u * ny;
+    Fb = CYL__P(abs)(F) * (1 + 2 * u) + Ey * (2 * ny + Ey) + 4 * u * yy + 6 * u * f->r2aa;
+    EG = Ey * ns + (ny + Ey) * Es + 4 * u * ny * ns;
+    EA = Es * (2 * ns + Es) + 4 * u * f->A;
     Ap = f->A + EA;
     Am = f->A - EA;
     Gb = aG - EG;
@@ -668,12 +714,11 @@ CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *
 /* t_err of a cap crossing (N5): the plane's residual z0 + tζ ∓ Ha over |ζ|, both bounded. */
 CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x)
 {
-    const CYL__L u = CYL__LU;
-    CYL__L Na = CYL__P(norm1)(f->a), Nd = CYL__P(norm1)(f->d);
+    const CYL__L u = CYL__LU, nd = CYL__LSQRT(f->ad);
     CYL__L g = f->z0 + x->t * f->zeta - (x->part == CYL_CAP_HIGH ? f->Ha : -f->Ha);
-    CYL__L Eg = 6 * u * (Na * (CYL__P(norm1)(f->w) + CYL__P(abs)(x->t) * Nd) + f->Ha) +
+    CYL__L Eg = 5 * u * (CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * nd) + 4 * u * f->Ha +
                 2 * u * CYL__P(abs)(g);
-    CYL__L den = CYL__P(abs)(f->zeta) - 4 * u * Na * Nd;
+    CYL__L den = CYL__P(abs)(f->zeta) - 4 * u * nd;
     return den > 0 ? (CYL__P(abs)(g) + Eg) / den * (1 + 32 * u) : CYL__LINF;
 }
 
@@ -815,6 +860,7 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
         f->vlim = (CYL__L)CYL__P(toward0)((CYL__R)f->vlim);
     f->lo = CYL__COLD_LO;
     f->hi = CYL__HOT_HI;
+    f->kahan = 1;
     f->exact = 1;
 }
 
@@ -906,6 +952,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__LU
 #undef CYL__LSQRT
 #undef CYL__LABS
+#undef CYL__LFMA
 #undef CYL__RSQRT
 #undef CYL__HOT_HI
 #undef CYL__HOT_LO
