@@ -395,6 +395,7 @@ typedef struct CYL__P(cross) {
 
 static int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                         int want, CYL__N(hit) *hits);
+static inline int CYL__P(expo)(CYL__R x);
 static inline CYL__R CYL__P(scale)(CYL__R x, int k);
 static inline CYL__R CYL__P(toward0)(CYL__R x);
 
@@ -544,7 +545,7 @@ CYL__INL int CYL__P(classify_wall)(const CYL__P(frame) *f)
 }
 
 /* The two wall roots in t order from the stable pair (N4): with q = −(B + sgn(B)√(|a|²D)),
-   q² >= AC, so B's sign orders q/A and C/q. A contact inside the band without a real root
+   q² >= AC, so B's sign orders q/A and C/q up to their rounding. A contact inside the band without a real root
    (D <= 0) is the point of closest approach, twice. Returns √(|a|²D). */
 CYL__INL CYL__L CYL__P(wall_roots)(const CYL__P(frame) *f, CYL__L t[2])
 {
@@ -559,6 +560,11 @@ CYL__INL CYL__L CYL__P(wall_roots)(const CYL__P(frame) *f, CYL__L t[2])
         t[1] = f->C / q;
     }
     if (!(f->D > 0)) t[0] = t[1] = -f->B / f->A;
+    if (t[0] > t[1]) { /* two crossings within a rounding of each other */
+        q = t[0];
+        t[0] = t[1];
+        t[1] = q;
+    }
     return sq;
 }
 
@@ -628,8 +634,9 @@ CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, uns
         for (i = 0; i < 3; i++) n[i] = g * f->s[i] - x->h * as[i];
         len = CYL__P(dot)(n, n);
         if (!(len >= CYL__LTINY * CYL__K(4503599627370496.0) && len <= CYL__LMAX * CYL__LU)) {
-            g = 1 / CYL__P(max)(CYL__P(max)(CYL__P(abs)(n[0]), CYL__P(abs)(n[1])), CYL__P(abs)(n[2]));
-            for (i = 0; i < 3; i++) n[i] *= g; /* |n|² would leave the normal range */
+            int e = CYL__LT(expo)(CYL__P(max)(CYL__P(max)(CYL__P(abs)(n[0]), CYL__P(abs)(n[1])),
+                                              CYL__P(abs)(n[2])));
+            for (i = 0; i < 3; i++) n[i] = CYL__LT(scale)(n[i], -e); /* |n|² out of range */
             len = CYL__P(dot)(n, n);
         }
         len = CYL__LSQRT(len);
