@@ -413,6 +413,19 @@ CYL__INL void CYL__P(cross3)(const CYL__L x[3], const CYL__L y[3], CYL__L z[3])
     z[1] = x[2] * y[0] - x[0] * y[2];
     z[2] = x[0] * y[1] - x[1] * y[0];
 }
+/* z = x·p + y·q, componentwise, written out (no loop: the frame stays in registers). */
+CYL__INL void CYL__P(lin)(CYL__L p, const CYL__L x[3], CYL__L q, const CYL__L y[3], CYL__L z[3])
+{
+    z[0] = x[0] * p + y[0] * q;
+    z[1] = x[1] * p + y[1] * q;
+    z[2] = x[2] * p + y[2] * q;
+}
+CYL__INL void CYL__P(mul3)(CYL__L p, const CYL__L x[3], CYL__L z[3])
+{
+    z[0] = x[0] * p;
+    z[1] = x[1] * p;
+    z[2] = x[2] * p;
+}
 /* ab − cd within 2u of itself (Kahan's algorithm with FMA; Jeannerod, Louvet, Muller 2013). */
 CYL__INL CYL__L CYL__P(dop)(CYL__L a, CYL__L b, CYL__L c, CYL__L d)
 {
@@ -439,13 +452,16 @@ CYL__INL int CYL__P(steep)(const CYL__P(frame) *f);
 CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                          int want, CYL__N(hit) *hits)
 {
-    CYL__P(frame) f;
-    int i;
-    for (i = 0; i < 3; i++) {
-        f.w[i] = (CYL__L)ray->o[i] - (CYL__L)cyl->c[i];
-        f.d[i] = (CYL__L)ray->d[i];
-        f.a[i] = (CYL__L)cyl->a[i];
-    }
+    CYL__P(frame) f; /* written out, not in a loop: gcc then keeps the frame in registers */
+    f.w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0];
+    f.w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1];
+    f.w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2];
+    f.d[0] = (CYL__L)ray->d[0];
+    f.d[1] = (CYL__L)ray->d[1];
+    f.d[2] = (CYL__L)ray->d[2];
+    f.a[0] = (CYL__L)cyl->a[0];
+    f.a[1] = (CYL__L)cyl->a[1];
+    f.a[2] = (CYL__L)cyl->a[2];
     f.r = (CYL__L)cyl->r;
     f.H = (CYL__L)cyl->h * CYL__K(0.5);
     f.tmin = (CYL__L)ray->tmin;
@@ -459,8 +475,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.et = f.ev = 0;
     f.exact = 1;
     f.kahan = 0;
-    if ((CYL__P(derive)(&f) == 0) | CYL__P(parallel)(&f) | CYL__P(steep)(&f) |
-        ((opts & ~CYL__SUPPORTED) != 0u))
+    if ((CYL__P(derive)(&f) == 0) | CYL__P(steep)(&f) | ((opts & ~CYL__SUPPORTED) != 0u))
         return CYL__P(cold)(ray, cyl, opts, want, hits);
     return CYL__P(answer)(&f, opts, want, hits);
 }
@@ -527,12 +542,14 @@ CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f)
     return f->A <= p2 * f->ad;
 }
 
-/* A ray within 2^-8 of the axis' direction, where the plain s = a × d of inputs in the working
-   type loses log2(1/sin) bits, which the wall decision inherits as u·|w|/(r sin) of e: the
-   exact path forms it with FMA (N1). Float inputs in double give exact products. */
+/* The rays the exact path answers: parallel ones, and where the plain s = a × d of inputs in
+   the working type loses log2(1/sin) bits, which the wall decision inherits as u·|w|/(r sin)
+   of e, those within 2^-8 of the axis' direction, for which it forms s with FMA (N1). Float
+   inputs in double give exact products. */
 CYL__INL int CYL__P(steep)(const CYL__P(frame) *f)
 {
-    return sizeof(CYL__L) == sizeof(CYL__R) && 65536 * f->A < f->ad;
+    if (sizeof(CYL__L) > sizeof(CYL__R)) return CYL__P(parallel)(f);
+    return 65536 * f->A < f->ad; /* parallel ones included */
 }
 
 /* The wall (N3, N6): 0 the ray line misses the infinite tube, 1 a tangent contact (e within the
@@ -627,26 +644,27 @@ CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, uns
                              CYL__L n[3])
 {
     CYL__L as[3], len, g;
-    int i;
     if (x->part == CYL_SIDE) {
         CYL__P(cross3)(f->a, f->s, as);
         g = f->P * f->aa;
-        for (i = 0; i < 3; i++) n[i] = g * f->s[i] - x->h * as[i];
+        CYL__P(lin)(g, f->s, -x->h, as, n);
         len = CYL__P(dot)(n, n);
         if (!(len >= CYL__LTINY * CYL__K(4503599627370496.0) && len <= CYL__LMAX * CYL__LU)) {
             int e = CYL__LT(expo)(CYL__P(max)(CYL__P(max)(CYL__P(abs)(n[0]), CYL__P(abs)(n[1])),
                                               CYL__P(abs)(n[2])));
-            for (i = 0; i < 3; i++) n[i] = CYL__LT(scale)(n[i], -e); /* |n|² out of range */
+            n[0] = CYL__LT(scale)(n[0], -e); /* |n|² would leave the normal range */
+            n[1] = CYL__LT(scale)(n[1], -e);
+            n[2] = CYL__LT(scale)(n[2], -e);
             len = CYL__P(dot)(n, n);
         }
         len = CYL__LSQRT(len);
     } else {
         g = x->part == CYL_CAP_HIGH ? 1 : -1;
-        for (i = 0; i < 3; i++) n[i] = g * f->a[i];
+        CYL__P(mul3)(g, f->a, n);
         len = f->sqaa;
     }
     g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 / len : 1 / len;
-    for (i = 0; i < 3; i++) n[i] *= g;
+    CYL__P(mul3)(g, n, n);
 }
 
 /* v of a wall point (N5), kept within the tube's half height. */
@@ -696,8 +714,8 @@ CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *
 {
     const CYL__L u = CYL__LU;
     CYL__L y[3], yy, F, G, aG, ny, ns, Es, Ey, Fb, EG, EA, Ap, Am, Gb, err;
-    int i, same;
-    for (i = 0; i < 3; i++) y[i] = f->m[i] + x->t * f->s[i];
+    int same;
+    CYL__P(lin)(1, f->m, x->t, f->s, y);
     yy = CYL__P(dot)(y, y);
     F = yy - f->r2aa;
     G = CYL__P(dot)(y, f->s);
@@ -736,7 +754,6 @@ CYL__INL void CYL__P(store)(const CYL__P(frame) *f, CYL__L t, CYL__L err, CYL__L
                             const CYL__L n[3], const CYL__P(cross) *x, CYL__N(hit) *hit)
 {
     CYL__R tr, vr;
-    int i;
     if ((f->et | f->ev) != 0) {
         CYL__L t0 = CYL__LT(scale)(t, f->et);
         t = CYL__P(max)(f->rmin, CYL__P(min)(t0, f->rmax));
@@ -754,7 +771,9 @@ CYL__INL void CYL__P(store)(const CYL__P(frame) *f, CYL__L t, CYL__L err, CYL__L
     }
     hit->t = tr;
     hit->t_err = (CYL__R)err;
-    for (i = 0; i < 3; i++) hit->n[i] = (CYL__R)n[i];
+    hit->n[0] = (CYL__R)n[0];
+    hit->n[1] = (CYL__R)n[1];
+    hit->n[2] = (CYL__R)n[2];
     hit->v = vr;
     hit->part = x->part;
     hit->flags = x->flags;
