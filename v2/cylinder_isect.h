@@ -635,7 +635,8 @@ CYL__INL CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, i
 CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x);
 CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x);
 CYL__INL void CYL__P(store)(const CYL__P(frame) *f, CYL__L t, CYL__L err, CYL__L v,
-                            const CYL__L n[3], const CYL__P(cross) *x, CYL__N(hit) *hit);
+                            const CYL__L n[3], const CYL__P(cross) *x, unsigned opts,
+                            CYL__N(hit) *hit);
 
 /* The unit normal (N5). The wall's outward one is y × a at the crossing, which from the roots
    is P|a|²·s ∓ √(|a|²D)·(a × s) (entry −, exit +): no cancellation for far origins. A cap's is
@@ -682,7 +683,7 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsig
     if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, x, opts, n);
     if (!(opts & CYL_NO_ERRBOUND))
         err = x->part == CYL_SIDE ? CYL__P(bound_wall)(f, x) : CYL__P(bound_cap)(f, x);
-    CYL__P(store)(f, x->t, err, v, n, x, hit);
+    CYL__P(store)(f, x->t, err, v, n, x, opts, hit);
 }
 
 /* The answer on a frame: the crossings in t order, each emitted as it is found; occluded and
@@ -751,7 +752,8 @@ CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x
    kept in the caller's range, t_err widened by t's own rounding into R and rounded up, v kept
    within h/2 after its rounding into R. */
 CYL__INL void CYL__P(store)(const CYL__P(frame) *f, CYL__L t, CYL__L err, CYL__L v,
-                            const CYL__L n[3], const CYL__P(cross) *x, CYL__N(hit) *hit)
+                            const CYL__L n[3], const CYL__P(cross) *x, unsigned opts,
+                            CYL__N(hit) *hit)
 {
     CYL__R tr, vr;
     if ((f->et | f->ev) != 0) {
@@ -763,10 +765,12 @@ CYL__INL void CYL__P(store)(const CYL__P(frame) *f, CYL__L t, CYL__L err, CYL__L
     if (!f->exact) err = CYL__LINF;
     tr = (CYL__R)t;
     vr = (CYL__R)v;
-    if (sizeof(CYL__L) > sizeof(CYL__R)) { /* t rounded to R: its rounding joins the bound */
-        err = (err + CYL__P(abs)((CYL__L)tr - t)) * (1 + CYL__K(2.384185791015625e-07)) +
-              CYL__K(1.40129846432481707e-45);
-        if (err > (CYL__L)CYL__RMAX) err = CYL__LINF;
+    if (sizeof(CYL__L) > sizeof(CYL__R)) {
+        if (!(opts & CYL_NO_ERRBOUND)) { /* t rounded to R: its rounding joins the bound */
+            err = (err + CYL__P(abs)((CYL__L)tr - t)) * (1 + CYL__K(2.384185791015625e-07)) +
+                  CYL__K(1.40129846432481707e-45);
+            if (err > (CYL__L)CYL__RMAX) err = CYL__LINF;
+        }
         if (CYL__P(abs)((CYL__L)vr) > f->vlim) vr = CYL__P(toward0)(vr);
     }
     hit->t = tr;
