@@ -19,14 +19,17 @@
  * o - c, so an origin at |w| from the axis moves e by about u |w|/r), times a safety factor. */
 #define FZ_REF_FACTOR 0x1p12L
 
-/* The header's flat-disk limit (N11): for an origin on the wall of a disk far wider than high
- * and a ray nearly parallel to the axis, the crossing near t = 0 is decided against the rim
- * with an error of about X = r/(h sin) times the solver's double words (2^-106; 2^-46 in a
+/* The header's flat-disk limit (v1: N11): for an origin on the wall of a disk far wider than
+ * high and a ray nearly parallel to the axis, the crossing near t = 0 is decided against the
+ * rim with an error of about X = r/(h sin) times the solver's double words (2^-106; 2^-46 in a
  * float-only build), times up to 2^10, relative to the rim margin. A margin within that
- * (times 16) is not one the library promises to decide. */
-static int fz_flat_rim(const fz_prob *p, const fz_geo *g, fz_real margin, int float_only)
+ * (times 16) is not one the library promises to decide. v2's default tier decides it with
+ * plain arithmetic, whose unit roundoff (2^-53; 2^-24 in a float-only build) takes the double
+ * words' place (v2's N6); its certified tier (CYL_PRECISE) is held to v1's limit. */
+static int fz_flat_rim(const fz_prob *p, const fz_geo *g, fz_real margin, int float_only, int plain)
 {
-  fz_real rho0 = fz_norm(g->axw), dw = float_only ? 0x1p-46L : 0x1p-106L;
+  fz_real rho0 = fz_norm(g->axw);
+  fz_real dw = plain ? (float_only ? 0x1p-24L : 0x1p-53L) : (float_only ? 0x1p-46L : 0x1p-106L);
   if (!(g->sin_th > 0) || !isfinite(g->H) || !(g->H > 0)) return 0;
   if (!(fabsl(rho0 - p->r) <= 0x1p-8L * p->r)) return 0; /* the origin on the wall */
   return margin <= 0x1p14L * dw * (p->r / (2 * g->H * g->sin_th));
@@ -63,7 +66,8 @@ static unsigned long fz_ref_decisions;
     if (!g.ok) return;                                                                         \
     thr = FZ_REF_FACTOR * u * (1 + fz_abssum(g.w) / p.r);                                      \
     if (!((fz_real)rr.margin > thr)) return;                                                   \
-    if (fz_flat_rim(&p, &g, (fz_real)rr.margin, (PREC) == 24 && !CYL_FLOAT_WIDE)) return;      \
+    if (fz_flat_rim(&p, &g, (fz_real)rr.margin, (PREC) == 24 && !CYL_FLOAT_WIDE,              \
+                    CYL_VERSION_MAJOR >= 2 && !(opts & CYL_PRECISE))) return;                  \
     /* ref/cyl_ref.c decides the caps of a ray flagged parallel but not exactly parallel by the \
      * distance between the two lines (which meet far away), not by the crossing points: its  \
      * decisions are not used there (reported to the reference's owner) */                    \

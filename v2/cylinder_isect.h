@@ -383,7 +383,7 @@ typedef struct CYL__N(hit) {
 typedef struct CYL__P(frame) {
     CYL__L w[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, tlim, vlim, lo, hi;
     CYL__L s[3], m[3], aa, ad, aww, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha;
-    int et, ev, exact, kahan;
+    int et, ev, exact, cold; /* cold: the exact path's frame (FMA products, unscaled output) */
 } CYL__P(frame);
 
 /* One crossing of the ray with the surface. */
@@ -474,7 +474,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.hi = CYL__HOT_HI;
     f.et = f.ev = 0;
     f.exact = 1;
-    f.kahan = 0;
+    f.cold = 0;
     if ((CYL__P(derive)(&f) == 0) | CYL__P(steep)(&f) | ((opts & ~CYL__SUPPORTED) != 0u))
         return CYL__P(cold)(ray, cyl, opts, want, hits);
     return CYL__P(answer)(&f, opts, want, hits);
@@ -507,7 +507,7 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
     CYL__L mm;
-    if (f->kahan) {
+    if (f->cold) {
         CYL__P(cross_exact)(f->a, f->d, f->s);
         CYL__P(cross_exact)(f->a, f->w, f->m);
     } else {
@@ -756,7 +756,7 @@ CYL__INL void CYL__P(store)(const CYL__P(frame) *f, CYL__L t, CYL__L err, CYL__L
                             CYL__N(hit) *hit)
 {
     CYL__R tr, vr;
-    if ((f->et | f->ev) != 0) {
+    if (f->cold) {
         CYL__L t0 = CYL__LT(scale)(t, f->et);
         t = CYL__P(max)(f->rmin, CYL__P(min)(t0, f->rmax));
         err = CYL__LT(scale)(err, f->et) + CYL__LTINY + CYL__P(abs)(t - t0);
@@ -890,7 +890,7 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
         f->vlim = (CYL__L)CYL__P(toward0)((CYL__R)f->vlim);
     f->lo = CYL__COLD_LO;
     f->hi = CYL__HOT_HI;
-    f->kahan = 1;
+    f->cold = 1;
     f->exact = 1;
 }
 
