@@ -19,28 +19,24 @@
            printf("error: %s\n", cyl_strerror(rc));
 
    No implementation macro: every function is `static inline` (CYL_DEF). cylf_* is the float
-   API, cyld_* the double one, both from one body this file includes twice. Link with -lm unless
-   sqrt inlines (gcc and clang with -fno-math-errno).
+   API, cyld_* the double one, one body included twice. Link with -lm (or -fno-math-errno).
 
    CONTRACT
    ========
    Geometry. The surface is the set of points at distance r from the axis line through c whose
    axial coordinate v = â·(x − c) lies in [−h/2, h/2]; â = a/|a|. The cap at c − â·h/2 is
-   CYL_CAP_LOW, the one at c + â·h/2 is CYL_CAP_HIGH.
-     - a may have any nonzero length; only its direction counts.
-     - h = +INFINITY is the infinite tube (CYL_CAPS then changes nothing).
-     - default: the open tube (curved wall only); CYL_CAPS: the solid capped cylinder.
+   CYL_CAP_LOW, the one at c + â·h/2 is CYL_CAP_HIGH. a may have any nonzero length; only its
+   direction counts. h = +INFINITY is the infinite tube (CYL_CAPS then changes nothing).
+   Default: the open tube (curved wall only); CYL_CAPS: the solid capped cylinder.
    Ray. x(t) = o + t·d, d of any nonzero length, t in units of d; accepted t in [tmin, tmax]
    (inclusive; ±INFINITY allowed). Hits whose t is not representable count as misses.
 
    int cylf_intersect(const cylf_ray*, const cylf_cylinder*, unsigned opts, cylf_hit *hit)
        The nearest hit with tmin <= t <= tmax: returns CYL_HIT and fills *hit, or CYL_MISS, or a
-       negative CYL_E_* code. On a miss or an error *hit is not touched, so it can be a caller's
-       closest-hit record.
+       negative CYL_E_* code. On a miss or an error *hit is not touched.
    int cylf_intersect_all(ray, cyl, opts, cylf_hit hits[2])
        Every hit in range (at most 2), sorted by t; returns the count (0, 1, 2) or an error.
-       Open tube: both wall crossings. Capped solid: entry and exit. hits[i] for i >= count
-       are not touched.
+       Open tube: both wall crossings; capped solid: entry and exit. hits[i >= count] untouched.
    int cylf_occluded(ray, cyl, opts)
        1 if anything is hit in range, 0 if not, or an error: the shadow-ray test, the cheapest.
    cylf_cylinder cylf_from_segment(const float p0[3], const float p1[3], float r)
@@ -51,22 +47,22 @@
 
    The hit. t; t_err: the exact intersection of the given (already rounded) inputs with the
    reported part lies in [t − t_err, t + t_err] (a residual bound, N5); n: unit normal, facing
-   the ray origin (n·d <= 0) by default, the geometric outward normal with CYL_OUTWARD; v: axial
-   coordinate of the hit, within [−h/2, h/2] (exactly ±h/2 on a cap; on an infinite tube it
-   saturates at the largest finite value); part: CYL_SIDE, CYL_CAP_LOW, CYL_CAP_HIGH; flags:
+   the ray origin (n·d <= 0) by default, the outward one with CYL_OUTWARD; v: axial coordinate,
+   within [−h/2, h/2] (exactly ±h/2 on a cap; saturated at the largest finite value on an
+   infinite tube); part: CYL_SIDE, CYL_CAP_LOW, CYL_CAP_HIGH; flags:
      CYL_F_INSIDE    the ray meets the surface from inside (it leaves the solid, or crosses the
-                     tube's wall outward: an origin inside gets this on its first hit);
-     CYL_F_TANGENT   a grazing wall contact: e = 1 − ρ²/r² lies within ±CYL_TANGENT_TOL, where ρ
-                     is the distance between the ray line and the axis line. Such a contact
-                     counts as a hit (both crossings, at or near the same t) unless
-                     CYL_NO_TANGENT is given; there t is only determined to about √u (N6)
-                     and t_err says so.
-     CYL_F_PARALLEL  sin(angle between d and a) <= CYL_PARALLEL_TOL: treated as parallel. The
-                     wall is then never hit; with CYL_CAPS a cap is hit where the ray point lies
-                     inside its disk. A wall crossing such a ray's inputs do determine (a ray
-                     leaving the wall can cross it again tens of radii along) is dropped too:
-                     the rule's limit (N7).
+                     wall outward: an origin inside gets this on its first hit);
+     CYL_F_TANGENT   a grazing wall contact: e = 1 − ρ²/r² within ±CYL_TANGENT_TOL, ρ the
+                     distance between the ray line and the axis line. It counts as a hit (both
+                     crossings, at or near the same t) unless CYL_NO_TANGENT; t is then only
+                     determined to about √u (N6), and t_err says so.
+     CYL_F_PARALLEL  sin(angle between d and a) <= CYL_PARALLEL_TOL: the wall is never hit;
+                     with CYL_CAPS a cap is hit where the ray point lies inside its disk. A wall
+                     crossing such a ray's inputs do determine is dropped too (N7).
    A hit exactly on the rim (the circle where wall and cap meet) is reported as CYL_SIDE.
+   Decisions (hit or miss, part, tangent, rim, t range) are taken with plain comparisons: each
+   is right where its margin exceeds the working type's rounding of the quantities it compares
+   (N6); nearer than that either answer may come, and t_err still holds for the part reported.
 
    Errors, checked in this order; *hit is never touched on an error:
      CYL_E_NULL (-1) a NULL pointer            CYL_E_RADIUS (-5) r <= 0, NaN or infinite
@@ -79,26 +75,24 @@
      CYL_CAPS          solid capped cylinder instead of the open tube
      CYL_OUTWARD       outward normal instead of the ray-facing one
      CYL_NO_TANGENT    grazing contacts within the tangent tolerance are misses
-     CYL_PRECISE       the certified tier: not in this version (CYL_NO_PRECISE is defined and
-                       the bit returns CYL_E_OPTION)
+     CYL_PRECISE       the certified tier: not in this version yet; the header defines
+                       CYL_NO_PRECISE and the bit returns CYL_E_OPTION
      CYL_NO_NORMAL     skip the normal: hit.n = {0, 0, 0}
      CYL_NO_ERRBOUND   skip the bound: hit.t_err = +INFINITY
-     CYL_TRUSTED       the caller guarantees valid input. Accepted for compatibility: the hot
-                       path never validates (it checks derived values once, N2), so it saves
-                       nothing; NULL and option checks remain.
+     CYL_TRUSTED       accepted, changes nothing: the hot path validates nothing (one range
+                       test on derived values sends invalid input to the exact path, N2)
    Pass options as constants: the entry points are forced inline (CYL_DEF), so the code of an
-   option not given folds away at each call site. Define CYL_DEF as plain `static inline` to let
-   the compiler keep one out-of-line copy where calls are many and code size matters more.
+   option not given folds away at each call site.
 
    CONFIGURATION (define before including)
    =============
      macro                 default                      effect
      CYL_NO_FLOAT          undefined                    leave out cylf_* (and its code)
      CYL_NO_DOUBLE         undefined                    leave out cyld_*: no double anywhere
-     CYL_DEF               static inline, forced inline qualifier of every public function
-                           with gcc and clang unless -Os
-     CYL_SQRTF, CYL_SQRT   __builtin_sqrt[f] (gcc,      square roots; <math.h> is included
-                           clang), else sqrt[f]          only when a non-builtin default is used
+     CYL_DEF               static inline (forced, gcc   qualifier of every public function;
+                           and clang unless -Os)        `static inline` lets calls share code
+     CYL_SQRTF, CYL_SQRT   __builtin_sqrt[f] or sqrt[f] square roots
+     CYL_FMAF, CYL_FMA     __builtin_fma[f] or fma[f]   the exact path's fused multiply-add
      CYL_FLOAT_WIDE        1 where double is hardware   the float API computes in double (the
                            (x86-64, AArch64, ARM with   same body, another working type); 0: in
                            VFP-D, RV64D, s390x, ppc64)  float (always so with CYL_NO_DOUBLE)
@@ -107,16 +101,16 @@
      CYL_PARALLEL_TOLF     2^-24 = u (float)            parallel bound on sin(angle)
      CYL_PARALLEL_TOL      2^-53 = u (double)
      CYL_HEADER_FILENAME   "cylinder_isect.h"           how this file includes itself
-     CYL_FMAF, CYL_FMA     __builtin_fma[f], else fma[f] fused multiply-add of the exact path only
-   Removed in v2 (#error says so): CYL_NO_FAST_PATH, CYL_INTERNAL.
+   Gone in v2 (#error): CYL_NO_FAST_PATH and CYL_INTERNAL (one path, internals follow CYL_DEF).
 
    ACCURACY
    ========
-   Not yet measured for v2: `make report` on this header regenerates these lines (issue 28).
-   Every decision is taken once with plain comparisons in the working type (N3); t comes from
-   the stable root pair, t_err from the residual at it (N5). Both APIs: a decision farther than
-   a few ulps of the problem's size from its boundary is right; far origins add the rounding
-   of o − c, about u·|o − c|/r of e (N6).
+   Against the exact MPFR reference of ref/ (`make test V=2`: 1000 cases per family, caps on
+   and off, seed 20261122; `make report V=2` for every figure): t_err held the exact t on
+   every hit of every family; no misclassification beyond the band on the benign families
+   (well, huge, tiny, axis). t on well-conditioned hits: the float API computed in double is
+   within 0.5 ulps; the double API within 4.34 ulps on walls and 9.78 on caps (a cap crossing
+   inherits the cancellation of z0 + h/2, a plain tier's limit, N6), against the 4 ulps aimed at.
 
    WHAT IT DOES NOT DO
    ===================
@@ -140,11 +134,8 @@
 #if defined(CYL_NO_FLOAT) && defined(CYL_NO_DOUBLE)
 #error "cylinder_isect.h: CYL_NO_FLOAT and CYL_NO_DOUBLE together leave nothing"
 #endif
-#if defined(CYL_NO_FAST_PATH)
-#error "cylinder_isect.h: CYL_NO_FAST_PATH is gone in v2: there is one path, remove the macro"
-#endif
-#if defined(CYL_INTERNAL)
-#error "cylinder_isect.h: CYL_INTERNAL is gone in v2: internal functions follow CYL_DEF's call site; remove it"
+#if defined(CYL_NO_FAST_PATH) || defined(CYL_INTERNAL)
+#error "cylinder_isect.h: CYL_NO_FAST_PATH and CYL_INTERNAL are gone in v2 (one path; internals follow CYL_DEF's call site): remove them"
 #endif
 /* v2 has no certified tier yet: CYL_PRECISE is an unknown bit (issue 29 adds it). */
 #ifndef CYL_NO_PRECISE
@@ -224,42 +215,26 @@
 #define CYL_PARALLEL_TOL (1.0 / 9007199254740992.0)           /* 2^-53 */
 #endif
 
-/* Environment hooks: builtins where the compiler has them (no header, one instruction with
-   -fno-math-errno), <math.h> otherwise. */
+/* Environment hooks: builtins where the compiler has them (no header; sqrt one instruction
+   with -fno-math-errno, fma with a hardware FMA), <math.h> otherwise. */
 #if defined(__GNUC__) || defined(__clang__)
-#define CYL__MEMCPY(d, s, n) __builtin_memcpy(d, s, n)
-#define CYL__FABSF(x) __builtin_fabsf(x)
-#define CYL__FABS(x) __builtin_fabs(x)
-#ifndef CYL_SQRTF
-#define CYL_SQRTF(x) __builtin_sqrtf(x)
-#endif
-#ifndef CYL_SQRT
-#define CYL_SQRT(x) __builtin_sqrt(x)
-#endif
-#ifndef CYL_FMAF
-#define CYL_FMAF(a, b, c) __builtin_fmaf(a, b, c)
-#endif
-#ifndef CYL_FMA
-#define CYL_FMA(a, b, c) __builtin_fma(a, b, c)
-#endif
+#define CYL__B(f) __builtin_##f
 #else
 #include <math.h>
 #include <string.h>
-#define CYL__MEMCPY(d, s, n) memcpy(d, s, n)
-#define CYL__FABSF(x) fabsf(x)
-#define CYL__FABS(x) fabs(x)
+#define CYL__B(f) f
+#endif
 #ifndef CYL_SQRTF
-#define CYL_SQRTF(x) sqrtf(x)
+#define CYL_SQRTF(x) CYL__B(sqrtf)(x)
 #endif
 #ifndef CYL_SQRT
-#define CYL_SQRT(x) sqrt(x)
+#define CYL_SQRT(x) CYL__B(sqrt)(x)
 #endif
 #ifndef CYL_FMAF
-#define CYL_FMAF(a, b, c) fmaf(a, b, c)
+#define CYL_FMAF(a, b, c) CYL__B(fmaf)(a, b, c)
 #endif
 #ifndef CYL_FMA
-#define CYL_FMA(a, b, c) fma(a, b, c)
-#endif
+#define CYL_FMA(a, b, c) CYL__B(fma)(a, b, c)
 #endif
 
 /* CYL_FLOAT_WIDE: the float API's working type is double, where double is hardware. */
@@ -348,7 +323,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LMAX DBL_MAX
 #define CYL__LU (DBL_EPSILON / 2)
 #define CYL__LSQRT(x) CYL_SQRT(x)
-#define CYL__LABS(x) CYL__FABS(x)
+#define CYL__LABS(x) CYL__B(fabs)(x)
 #define CYL__LFMA(a, b, c) CYL_FMA(a, b, c)
 #define CYL__LTINY 4.9406564584124654e-324 /* 2^-1074 */
 #define CYL__HOT_LO 4.9090934652977266e-91 /* 2^-300 */
@@ -361,7 +336,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LMAX FLT_MAX
 #define CYL__LU (FLT_EPSILON / 2)
 #define CYL__LSQRT(x) CYL_SQRTF(x)
-#define CYL__LABS(x) CYL__FABSF(x)
+#define CYL__LABS(x) CYL__B(fabsf)(x)
 #define CYL__LFMA(a, b, c) CYL_FMAF(a, b, c)
 #define CYL__LTINY 1.40129846e-45f /* 2^-149 */
 #define CYL__HOT_LO 8.67361738e-19f /* 2^-60 */
@@ -372,11 +347,7 @@ CYL_DEF const char *cyl_strerror(int code)
 
 typedef struct CYL__N(ray) { CYL__R o[3], d[3], tmin, tmax; } CYL__N(ray);
 typedef struct CYL__N(cylinder) { CYL__R c[3], a[3], r, h; } CYL__N(cylinder);
-typedef struct CYL__N(hit) {
-    CYL__R t, t_err, n[3], v;
-    int part;
-    unsigned flags;
-} CYL__N(hit);
+typedef struct CYL__N(hit) { CYL__R t, t_err, n[3], v; int part; unsigned flags; } CYL__N(hit);
 
 /* The frame (N1): the inputs in L, possibly scaled (t and v are then 2^et and 2^ev times the
    frame's), and everything derived from them once. */
@@ -386,12 +357,8 @@ typedef struct CYL__P(frame) {
     int et, ev, exact, cold; /* cold: the exact path's frame (FMA products, unscaled output) */
 } CYL__P(frame);
 
-/* One crossing of the ray with the surface. */
-typedef struct CYL__P(cross) {
-    CYL__L t, h; /* h: ∓√(|a|²D) for a wall crossing (entry −, exit +), for its normal */
-    int part, ok;
-    unsigned flags;
-} CYL__P(cross);
+/* One crossing of the ray with the surface; h: ∓√(|a|²D) at a wall (entry −, exit +). */
+typedef struct CYL__P(cross) { CYL__L t, h; int part, ok; unsigned flags; } CYL__P(cross);
 
 static int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                         int want, CYL__N(hit) *hits);
@@ -404,9 +371,7 @@ CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return CYL__LABS(x); }
 CYL__INL CYL__L CYL__P(max)(CYL__L x, CYL__L y) { return x > y ? x : y; }
 CYL__INL CYL__L CYL__P(min)(CYL__L x, CYL__L y) { return x < y ? x : y; }
 CYL__INL CYL__L CYL__P(dot)(const CYL__L x[3], const CYL__L y[3])
-{
-    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
-}
+{ return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
 CYL__INL void CYL__P(cross3)(const CYL__L x[3], const CYL__L y[3], CYL__L z[3])
 {
     z[0] = x[1] * y[2] - x[2] * y[1];
@@ -452,29 +417,16 @@ CYL__INL int CYL__P(steep)(const CYL__P(frame) *f);
 CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                          int want, CYL__N(hit) *hits)
 {
-    CYL__P(frame) f; /* written out, not in a loop: gcc then keeps the frame in registers */
-    f.w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0];
-    f.w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1];
-    f.w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2];
-    f.d[0] = (CYL__L)ray->d[0];
-    f.d[1] = (CYL__L)ray->d[1];
-    f.d[2] = (CYL__L)ray->d[2];
-    f.a[0] = (CYL__L)cyl->a[0];
-    f.a[1] = (CYL__L)cyl->a[1];
-    f.a[2] = (CYL__L)cyl->a[2];
-    f.r = (CYL__L)cyl->r;
-    f.H = (CYL__L)cyl->h * CYL__K(0.5);
-    f.tmin = (CYL__L)ray->tmin;
-    f.tmax = (CYL__L)ray->tmax;
-    f.rmin = f.tmin;
-    f.rmax = f.tmax;
-    f.tlim = (CYL__L)CYL__RMAX;
-    f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX);
-    f.lo = CYL__HOT_LO;
-    f.hi = CYL__HOT_HI;
-    f.et = f.ev = 0;
-    f.exact = 1;
-    f.cold = 0;
+    CYL__P(frame) f; /* filled without loops: gcc then keeps the frame in registers */
+    f.w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0], f.d[0] = (CYL__L)ray->d[0];
+    f.w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1], f.d[1] = (CYL__L)ray->d[1];
+    f.w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2], f.d[2] = (CYL__L)ray->d[2];
+    f.a[0] = (CYL__L)cyl->a[0], f.a[1] = (CYL__L)cyl->a[1], f.a[2] = (CYL__L)cyl->a[2];
+    f.r = (CYL__L)cyl->r, f.H = (CYL__L)cyl->h * CYL__K(0.5);
+    f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
+    f.tlim = (CYL__L)CYL__RMAX, f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX);
+    f.lo = CYL__HOT_LO, f.hi = CYL__HOT_HI;
+    f.et = f.ev = f.cold = 0, f.exact = 1;
     if ((CYL__P(derive)(&f) == 0) | CYL__P(steep)(&f) | ((opts & ~CYL__SUPPORTED) != 0u))
         return CYL__P(cold)(ray, cyl, opts, want, hits);
     return CYL__P(answer)(&f, opts, want, hits);
@@ -632,11 +584,39 @@ CYL__INL CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, i
 }
 
 /* ------------------------------------------------------------------ output and bound */
-CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x);
-CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x);
-CYL__INL void CYL__P(store)(const CYL__P(frame) *f, CYL__L t, CYL__L err, CYL__L v,
-                            const CYL__L n[3], const CYL__P(cross) *x, unsigned opts,
-                            CYL__N(hit) *hit);
+
+/* t_err of a wall crossing (N5): the residual F = |y|² − r²|a|² and G = y·s (half the slope) at
+   t, y = m + t·s, with bounds EF, EG on their rounding (standard model, 2-norms: a cross
+   product's componentwise error sums to at most γ2·√6·|x||z|); the root of the same crossing
+   is within (|F| + EF)/(|G| − EG) where that is the quadratic's near branch, else within the
+   product-of-roots bound. */
+CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x)
+{
+    const CYL__L u = CYL__LU, ns = CYL__LSQRT(f->A), Es = 5 * u * CYL__LSQRT(f->ad);
+    CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb;
+    CYL__P(lin)(1, f->m, x->t, f->s, y);
+    yy = CYL__P(dot)(y, y), ny = CYL__LSQRT(yy), F = yy - f->r2aa, G = CYL__P(dot)(y, f->s);
+    Ey = CYL__K(7.5) * u * CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * (Es + 4 * u * ns) + 2 * u * ny;
+    Fb = CYL__P(abs)(F) * (1 + 2 * u) + Ey * (2 * ny + Ey) + 4 * u * yy + 6 * u * f->r2aa;
+    EG = Ey * ns + (ny + Ey) * Es + 4 * u * ny * ns;
+    EA = Es * (2 * ns + Es) + 4 * u * f->A;
+    /* G with the crossing's sign (entry negative), any sign for a tangent contact */
+    Gb = (x->flags & CYL_F_TANGENT ? CYL__P(abs)(G) : x->flags & CYL_F_INSIDE ? G : -G) - EG;
+    if (Gb > 0 && Gb * Gb >= (f->A + EA) * Fb) return Fb / Gb * (1 + 32 * u);
+    if (!(f->A > EA)) return CYL__LINF;
+    return (2 * (CYL__P(abs)(G) + EG) + CYL__LSQRT((f->A + EA) * Fb)) / (f->A - EA) * (1 + 32 * u);
+}
+
+/* t_err of a cap crossing (N5): the plane's residual z0 + tζ ∓ Ha over |ζ|, both bounded. */
+CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x)
+{
+    const CYL__L u = CYL__LU, nd = CYL__LSQRT(f->ad);
+    CYL__L g = f->z0 + x->t * f->zeta - (x->part == CYL_CAP_HIGH ? f->Ha : -f->Ha);
+    CYL__L Eg = 5 * u * (CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * nd) + 4 * u * f->Ha +
+                2 * u * CYL__P(abs)(g);
+    CYL__L den = CYL__P(abs)(f->zeta) - 4 * u * nd;
+    return den > 0 ? (CYL__P(abs)(g) + Eg) / den * (1 + 32 * u) : CYL__LINF;
+}
 
 /* The unit normal (N5). The wall's outward one is y × a at the crossing, which from the roots
    is P|a|²·s ∓ √(|a|²D)·(a × s) (entry −, exit +): no cancellation for far origins. A cap's is
@@ -652,11 +632,9 @@ CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, uns
         len = CYL__P(dot)(n, n);
         if (!(len >= CYL__LTINY * CYL__K(4503599627370496.0) && len <= CYL__LMAX * CYL__LU)) {
             int e = CYL__LT(expo)(CYL__P(max)(CYL__P(max)(CYL__P(abs)(n[0]), CYL__P(abs)(n[1])),
-                                              CYL__P(abs)(n[2])));
-            n[0] = CYL__LT(scale)(n[0], -e); /* |n|² would leave the normal range */
-            n[1] = CYL__LT(scale)(n[1], -e);
-            n[2] = CYL__LT(scale)(n[2], -e);
-            len = CYL__P(dot)(n, n);
+                                              CYL__P(abs)(n[2]))); /* |n|² out of the range */
+            n[0] = CYL__LT(scale)(n[0], -e), n[1] = CYL__LT(scale)(n[1], -e);
+            n[2] = CYL__LT(scale)(n[2], -e), len = CYL__P(dot)(n, n);
         }
         len = CYL__LSQRT(len);
     } else {
@@ -675,15 +653,37 @@ CYL__INL CYL__L CYL__P(axial_v)(const CYL__P(frame) *f, CYL__L t)
     return CYL__P(max)(-f->H, CYL__P(min)(v, f->H));
 }
 
+/* The hit in the caller's units and type: t, t_err and v unscaled (the exact path's frames), t
+   kept in the caller's range, t_err widened by t's own rounding into R and rounded up, v kept
+   within h/2 after its rounding into R. */
 CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts,
                            CYL__N(hit) *hit)
 {
-    CYL__L n[3] = {0, 0, 0}, v, err = CYL__LINF;
-    v = x->part == CYL_SIDE ? CYL__P(axial_v)(f, x->t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
+    CYL__L n[3] = {0, 0, 0}, t = x->t, err = CYL__LINF, v;
+    CYL__R tr, vr;
+    v = x->part == CYL_SIDE ? CYL__P(axial_v)(f, t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
     if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, x, opts, n);
     if (!(opts & CYL_NO_ERRBOUND))
         err = x->part == CYL_SIDE ? CYL__P(bound_wall)(f, x) : CYL__P(bound_cap)(f, x);
-    CYL__P(store)(f, x->t, err, v, n, x, opts, hit);
+    if (f->cold) {
+        CYL__L t0 = CYL__LT(scale)(t, f->et);
+        t = CYL__P(max)(f->rmin, CYL__P(min)(t0, f->rmax));
+        err = f->exact ? CYL__LT(scale)(err, f->et) + CYL__LTINY + CYL__P(abs)(t - t0) : CYL__LINF;
+        v = CYL__P(max)(-f->vlim, CYL__P(min)(CYL__LT(scale)(v, f->ev), f->vlim));
+    }
+    tr = (CYL__R)t;
+    vr = (CYL__R)v;
+    if (sizeof(CYL__L) > sizeof(CYL__R)) {
+        if (!(opts & CYL_NO_ERRBOUND)) { /* t rounded to R: its rounding joins the bound */
+            err = (err + CYL__P(abs)((CYL__L)tr - t)) * (1 + CYL__K(2.384185791015625e-07)) +
+                  CYL__K(1.40129846432481707e-45);
+            if (err > (CYL__L)CYL__RMAX) err = CYL__LINF;
+        }
+        if (CYL__P(abs)((CYL__L)vr) > f->vlim) vr = CYL__P(toward0)(vr);
+    }
+    hit->t = tr, hit->t_err = (CYL__R)err, hit->v = vr;
+    hit->n[0] = (CYL__R)n[0], hit->n[1] = (CYL__R)n[1], hit->n[2] = (CYL__R)n[2];
+    hit->part = x->part, hit->flags = x->flags;
 }
 
 /* The answer on a frame: the crossings in t order, each emitted as it is found; occluded and
@@ -706,98 +706,16 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
     return n;
 }
 
-/* t_err of a wall crossing (N5): the residual F = |y|² − r²|a|² and G = y·s (half the slope) at
-   t, y = m + t·s, with bounds EF, EG on their rounding (standard model, 2-norms: a cross
-   product's componentwise error sums to at most γ2·√6·|x||z|); the root of the same crossing
-   is within (|F| + EF)/(|G| − EG) where that is the quadratic's near branch, else within the
-   product-of-roots bound. */
-CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x)
-{
-    const CYL__L u = CYL__LU;
-    CYL__L y[3], yy, F, G, aG, ny, ns, Es, Ey, Fb, EG, EA, Ap, Am, Gb, err;
-    int same;
-    CYL__P(lin)(1, f->m, x->t, f->s, y);
-    yy = CYL__P(dot)(y, y);
-    F = yy - f->r2aa;
-    G = CYL__P(dot)(y, f->s);
-    aG = CYL__P(abs)(G);
-    ny = CYL__LSQRT(yy);
-    ns = CYL__LSQRT(f->A);
-    Es = 5 * u * CYL__LSQRT(f->ad);
-    Ey = CYL__K(7.5) * u * CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * (Es + 4 * u * ns) + 2 * u * ny;
-    Fb = CYL__P(abs)(F) * (1 + 2 * u) + Ey * (2 * ny + Ey) + 4 * u * yy + 6 * u * f->r2aa;
-    EG = Ey * ns + (ny + Ey) * Es + 4 * u * ny * ns;
-    EA = Es * (2 * ns + Es) + 4 * u * f->A;
-    Ap = f->A + EA;
-    Am = f->A - EA;
-    Gb = aG - EG;
-    same = (x->flags & CYL_F_TANGENT) || ((G > 0) == ((x->flags & CYL_F_INSIDE) != 0u));
-    if (Gb > 0 && same && Gb * Gb >= Ap * Fb) err = Fb / Gb;
-    else err = Am > 0 ? (2 * (aG + EG) + CYL__LSQRT(Ap * Fb)) / Am : CYL__LINF;
-    return err * (1 + 32 * u);
-}
-
-/* t_err of a cap crossing (N5): the plane's residual z0 + tζ ∓ Ha over |ζ|, both bounded. */
-CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x)
-{
-    const CYL__L u = CYL__LU, nd = CYL__LSQRT(f->ad);
-    CYL__L g = f->z0 + x->t * f->zeta - (x->part == CYL_CAP_HIGH ? f->Ha : -f->Ha);
-    CYL__L Eg = 5 * u * (CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * nd) + 4 * u * f->Ha +
-                2 * u * CYL__P(abs)(g);
-    CYL__L den = CYL__P(abs)(f->zeta) - 4 * u * nd;
-    return den > 0 ? (CYL__P(abs)(g) + Eg) / den * (1 + 32 * u) : CYL__LINF;
-}
-
-/* Back to the caller's units and type: t, t_err and v unscaled (the exact path's frames), t
-   kept in the caller's range, t_err widened by t's own rounding into R and rounded up, v kept
-   within h/2 after its rounding into R. */
-CYL__INL void CYL__P(store)(const CYL__P(frame) *f, CYL__L t, CYL__L err, CYL__L v,
-                            const CYL__L n[3], const CYL__P(cross) *x, unsigned opts,
-                            CYL__N(hit) *hit)
-{
-    CYL__R tr, vr;
-    if (f->cold) {
-        CYL__L t0 = CYL__LT(scale)(t, f->et);
-        t = CYL__P(max)(f->rmin, CYL__P(min)(t0, f->rmax));
-        err = CYL__LT(scale)(err, f->et) + CYL__LTINY + CYL__P(abs)(t - t0);
-        v = CYL__P(max)(-f->vlim, CYL__P(min)(CYL__LT(scale)(v, f->ev), f->vlim));
-    }
-    if (!f->exact) err = CYL__LINF;
-    tr = (CYL__R)t;
-    vr = (CYL__R)v;
-    if (sizeof(CYL__L) > sizeof(CYL__R)) {
-        if (!(opts & CYL_NO_ERRBOUND)) { /* t rounded to R: its rounding joins the bound */
-            err = (err + CYL__P(abs)((CYL__L)tr - t)) * (1 + CYL__K(2.384185791015625e-07)) +
-                  CYL__K(1.40129846432481707e-45);
-            if (err > (CYL__L)CYL__RMAX) err = CYL__LINF;
-        }
-        if (CYL__P(abs)((CYL__L)vr) > f->vlim) vr = CYL__P(toward0)(vr);
-    }
-    hit->t = tr;
-    hit->t_err = (CYL__R)err;
-    hit->n[0] = (CYL__R)n[0];
-    hit->n[1] = (CYL__R)n[1];
-    hit->n[2] = (CYL__R)n[2];
-    hit->v = vr;
-    hit->part = x->part;
-    hit->flags = x->flags;
-}
-
 /* ------------------------------------------------------------------ the exact path */
 /* floor(log2(x)) for finite x > 0 in R, from the exponent bits (subnormals included). */
 static inline int CYL__P(expo)(CYL__R x)
 {
     CYL__UINT b;
-    int e, shift = 0;
-    CYL__MEMCPY(&b, &x, sizeof b);
+    int e;
+    CYL__B(memcpy)(&b, &x, sizeof b);
     e = (int)((b >> (CYL__MANT - 1)) & (CYL__UINT)(2 * CYL__EBIAS + 1));
-    if (e == 0) {
-        x *= CYL__P(scale)(1, CYL__MANT);
-        CYL__MEMCPY(&b, &x, sizeof b);
-        e = (int)((b >> (CYL__MANT - 1)) & (CYL__UINT)(2 * CYL__EBIAS + 1));
-        shift = CYL__MANT;
-    }
-    return e - CYL__EBIAS - shift;
+    if (e || !(x > 0)) return e - CYL__EBIAS;
+    return CYL__P(expo)(x * CYL__P(scale)(1, CYL__MANT)) - CYL__MANT; /* a subnormal */
 }
 
 /* x·2^k for any k, in steps of normal powers of two: only the last step can round. */
@@ -811,7 +729,7 @@ static inline CYL__R CYL__P(scale)(CYL__R x, int k)
         k -= s;
     }
     b = (CYL__UINT)(k + CYL__EBIAS) << (CYL__MANT - 1);
-    CYL__MEMCPY(&p, &b, sizeof p);
+    CYL__B(memcpy)(&p, &b, sizeof p);
     return x * p;
 }
 
@@ -819,9 +737,8 @@ static inline CYL__R CYL__P(scale)(CYL__R x, int k)
 static inline CYL__R CYL__P(toward0)(CYL__R x)
 {
     CYL__UINT b;
-    CYL__MEMCPY(&b, &x, sizeof b);
-    b -= 1u;
-    CYL__MEMCPY(&x, &b, sizeof x);
+    CYL__B(memcpy)(&b, &x, sizeof b);
+    b -= 1u, CYL__B(memcpy)(&x, &b, sizeof x);
     return x;
 }
 
@@ -835,8 +752,7 @@ static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder
             if (!(v[k][i] >= -CYL__RMAX && v[k][i] <= CYL__RMAX)) return CYL_E_NONFINITE;
             if (v[k][i] < 0 || v[k][i] > 0) zero[k] = 0;
         }
-    if (zero[1]) return CYL_E_ZERO_DIR;
-    if (zero[3]) return CYL_E_ZERO_AXIS;
+    if (zero[1] | zero[3]) return zero[1] ? CYL_E_ZERO_DIR : CYL_E_ZERO_AXIS;
     if (!(cyl->r > 0) || !(cyl->r <= CYL__RMAX)) return CYL_E_RADIUS;
     if (!(cyl->h > 0)) return CYL_E_HEIGHT;
     if (!(ray->tmin <= ray->tmax)) return CYL_E_TRANGE;
@@ -846,13 +762,8 @@ static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder
 
 CYL__INL CYL__R CYL__P(amax3)(const CYL__R x[3])
 {
-    CYL__R m = 0;
-    int i;
-    for (i = 0; i < 3; i++) {
-        CYL__R y = x[i] < 0 ? -x[i] : x[i];
-        m = y > m ? y : m;
-    }
-    return m;
+    CYL__R m = x[0] < 0 ? -x[0] : x[0], y = x[1] < 0 ? -x[1] : x[1], z = x[2] < 0 ? -x[2] : x[2];
+    return m > y ? (m > z ? m : z) : (y > z ? y : z);
 }
 
 /* The frame of valid input at a scale where the hot path's arithmetic neither overflows nor
@@ -876,22 +787,16 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
         f->d[i] = CYL__LT(scale)((CYL__L)ray->d[i], -kd);
         f->a[i] = CYL__LT(scale)((CYL__L)cyl->a[i], -ka);
     }
-    f->r = CYL__LT(scale)((CYL__L)cyl->r, -kl);
-    f->H = CYL__LT(scale)((CYL__L)cyl->h, -kl - 1);
-    f->et = kl - kd;
-    f->ev = kl;
-    f->tmin = CYL__LT(scale)((CYL__L)ray->tmin, -f->et);
-    f->tmax = CYL__LT(scale)((CYL__L)ray->tmax, -f->et);
+    f->r = CYL__LT(scale)((CYL__L)cyl->r, -kl), f->H = CYL__LT(scale)((CYL__L)cyl->h, -kl - 1);
+    f->et = kl - kd, f->ev = kl;
+    f->tmin = CYL__LT(scale)((CYL__L)ray->tmin, -f->et), f->rmin = (CYL__L)ray->tmin;
+    f->tmax = CYL__LT(scale)((CYL__L)ray->tmax, -f->et), f->rmax = (CYL__L)ray->tmax;
     f->tlim = CYL__LT(scale)((CYL__L)CYL__RMAX, -f->et);
-    f->rmin = (CYL__L)ray->tmin;
-    f->rmax = (CYL__L)ray->tmax;
     f->vlim = CYL__P(min)((CYL__L)cyl->h * CYL__K(0.5), (CYL__L)CYL__RMAX);
     if (sizeof(CYL__L) == sizeof(CYL__R) && f->vlim * 2 > (CYL__L)cyl->h) /* h/2 rounded up */
         f->vlim = (CYL__L)CYL__P(toward0)((CYL__R)f->vlim);
-    f->lo = CYL__COLD_LO;
-    f->hi = CYL__HOT_HI;
-    f->cold = 1;
-    f->exact = 1;
+    f->lo = CYL__COLD_LO, f->hi = CYL__HOT_HI;
+    f->cold = f->exact = 1;
 }
 
 /* A ray parallel to the axis (N7): no wall; with caps, each cap crossing where the ray point
@@ -989,37 +894,40 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__COLD_LO
 #endif /* CYL__BODY */
 
-/* NOTES (cited from the code as N1 .. N7)
-   ==========================================
-   u = 2^-24 (float), 2^-53 (double): the unit roundoff of the working type L.
-   N1. One formulation (../shared/DESIGN.md): w = o − c, s = a × d, m = a × w (cross products,
-       never projections: no cancellation for rays near the axis direction or origins far
-       along it), A = s·s, B = m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d, Ha = (h/2)|a|.
-   N2. Range: the hot path tests |a|², |d|², r², |w|² and Ha against one range instead of
-       validating 16 inputs; what fails (invalid, out of range) goes to the exact path, which
-       validates in the documented order and scales lengths, d and a by powers of two (exact,
-       so a scene scaled by 2^k gives the same bits scaled). Inside the range nothing the
-       bounds use overflows or underflows.
-   N3. Geometric discriminant B² − AC = |a|²·D, D = r²A − P², P = w·s (Ray Tracing Gems, ch. 7;
-       pbrt-v4 cylinders): no difference of large squares for far origins.
+/* NOTES (cited from the code as N1 .. N7); u is the working type's unit roundoff
+   N1. One formulation (DESIGN.md of the project): w = o − c, s = a × d, m = a × w (cross
+       products, never projections: no cancellation for rays near the axis direction or
+       origins far along it), A = s·s, B = m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d,
+       Ha = (h/2)|a|. The exact path forms s and m with Kahan's FMA difference of products
+       (Jeannerod, Louvet, Muller, Math. Comp. 82, 2013), each component within 2u of itself.
+   N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², Ha and
+       |a|⁴|d|²(|w|² + r²) against one range; every NaN, infinity, zero or out-of-range input
+       fails it and goes to the exact path, which validates in the documented order and
+       scales lengths, d and a by powers of two (exact: a scene scaled by 2^k gives the same
+       bits scaled). Within the range nothing the bounds use overflows or underflows.
+   N3. Geometric discriminant B² − AC = |a|²·D, D = r²A − P², P = w·s (Ray Tracing Gems,
+       ch. 7; pbrt-v4 cylinders): no difference of large squares for far origins.
    N4. Stable root pair q = −(B + sgn(B)√(|a|²D)), t = q/A and C/q (Numerical Recipes §5.6);
        caps by clipping the wall interval with the slab |z0 + tζ| <= Ha (Cychosz and
-       Waggenspack, Graphics Gems IV): watertight at the rim.
-   N5. Output: v = (z0 + tζ)/|a|; the wall normal y × a = |a|²·x⊥ for y = m + t·s = a × x;
-       t_err from the residual F = |y|² − r²|a|² and G = y·s at t, with bounds EF, EG on their
-       rounding from the standard model (Higham, "Accuracy and Stability of Numerical
-       Algorithms", ch. 3), 1-norms throughout: |δs| <= 3u|a|₁|d|₁, |δy| <= 4u|a|₁(|w|₁ +
-       |t||d|₁) + 2u|y|₁. The exact f(t + δ) = f + 2gδ + Aδ²: where g has the crossing's sign
-       and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F| + EF)/(|G| − EG); else within
-       (2|g| + √(A|f|))/A. A cap: the plane's residual over |ζ| less its bound. The float API
-       computed in double adds the rounding of t to float and rounds the bound up.
-   N6. Tangent band: e = D/(r²A) within ±CYL_TANGENT_TOL. Near tangency the root is
-       ill-conditioned (a relative input change ε moves t by about √ε·r/(|d| sin)); D carries
-       an error of a few u·(1 + |o − c|/r) relative to r²A, so for far origins the band's
-       edges blur by that much.
+       Waggenspack, Graphics Gems IV): watertight at the rim, no separate disk test.
+   N5. Output: v = (z0 + tζ)/|a|; the wall normal y × a (= |a|²x⊥, y = m + t·s = a × x)
+       written from the roots as P|a|²s ∓ √(|a|²D)(a × s). t_err: F = |y|² − r²|a|² and
+       G = y·s at t, with bounds EF, EG on their rounding (standard model, Higham, "Accuracy
+       and Stability of Numerical Algorithms", ch. 3; componentwise sums bounded by 2-norms,
+       e.g. |δ(a × w)|₁ <= 3u·√6|a||w|). f(t + δ) = f + 2gδ + Aδ² exactly: where g has the
+       crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F| + EF)/(|G| −
+       EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap: the plane's
+       residual over |ζ| less its bound. The float API computed in double adds t's rounding.
+   N6. The plain tier's limits, all from rounding the quantities each decision compares: e =
+       D/(r²A) carries a few u·(1 + |o − c|/r), so the tangent band's edges blur by that for
+       far origins; a rim, u·(|o − c| + |t d| + h)/h of the half height; the rim of a flat disk
+       seen along its axis from an origin on its wall, about u·r/(h·sin) of its margin; a t
+       range end, u·|t|; a cap crossing, the cancellation of z0 + Ha times u. A ray within
+       2^-8 of the axis' direction would add u/sin to e (far origins: u·|w|/(r·sin)); the
+       double API sends those to the exact path, whose s is accurate.
    N7. Parallel: A <= τ²|a|²|d|² (sin <= τ = CYL_PARALLEL_TOL). Below sin = u a half-ulp change
        of one component of d makes the ray exactly parallel; yet a ray from the wall can cross
-       it again a few dozen radii along, a crossing its inputs determine (a × d is exact for an
-       axis-aligned a), which the rule drops: pinned by
+       it again a few dozen radii along, a crossing its inputs determine (a × d is exact for
+       an axis-aligned a), which the rule drops: pinned by
        test_parallel_rule_drops_secondary_ray_from_wall in tests/contract/tangent.c.
 */
