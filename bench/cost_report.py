@@ -163,10 +163,15 @@ def report(a, loaded, unit, heading):
     """loaded: {(version, march): (vals, meta)}"""
     v2_present = any(v == "v2" for v, _ in loaded)
     metas = [m for _, m in loaded.values()]
-    lines = [heading, "", header_line(unit, a, metas, v2_present), ""]
+    return [heading, "", header_line(unit, a, metas, v2_present), ""] + tables(loaded, ROWS)
+
+
+def tables(loaded, rows):
+    """One table of the given rows per -march setting."""
+    lines = []
     for march, flags in MARCHES:
         data = {v: loaded[(v, march)][0] for v in VERSIONS if (v, march) in loaded}
-        lines += table(f"### gcc -std=c99 {flags}", data, ROWS)
+        lines += table(f"### gcc -std=c99 {flags}", data, rows)
         lines.append("")
     return lines
 
@@ -179,11 +184,7 @@ def every_site(a, loaded):
     for api in ["intersect", "intersect_all", "occluded"]:
         for s in SITES:
             rows.append((f"{api}, {SITE_OPTS[s]}", f"{api}:{s}"))
-    for march, flags in MARCHES:
-        data = {v: loaded[(v, march)][0] for v in VERSIONS if (v, march) in loaded}
-        lines += table(f"### gcc -std=c99 {flags}", data, rows)
-        lines.append("")
-    return lines
+    return lines + tables(loaded, rows)
 
 
 def key_of(meta, path):
