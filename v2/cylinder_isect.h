@@ -1,12 +1,10 @@
 /* cylinder_isect.h - v2.0.0 (in development beside v1) - ray/cylinder intersection, C99, one header.
 
-   Ray against a finite cylinder given by center c, axis a, radius r and height h: the open
-   tube by default, the capped solid and the infinite tube as options; nearest hit, both
-   crossings, or a shadow-ray test. No allocation, no global state, no I/O; nothing to link but
-   sqrt (overridable). Every hit carries a rigorous bound on its t.
+   Ray against a finite cylinder given by center c, axis a, radius r and height h: open tube,
+   capped solid or infinite tube; nearest hit, both crossings, or a shadow-ray test. No
+   allocation, no global state, no I/O. Every hit carries a rigorous bound on its t.
 
    QUICK START
-   ===========
        #include "cylinder_isect.h"
 
        cyld_ray ray = {{-5, 0.5, 0.25}, {1, 0, 0}, 0, 100};   // origin o, direction d, tmin, tmax
@@ -22,7 +20,6 @@
    API, cyld_* the double one, one body included twice. Link with -lm (or -fno-math-errno).
 
    CONTRACT
-   ========
    Geometry. The surface is the set of points at distance r from the axis line through c whose
    axial coordinate v = â·(x − c) lies in [−h/2, h/2]; â = a/|a|. The cap at c − â·h/2 is
    CYL_CAP_LOW, the one at c + â·h/2 is CYL_CAP_HIGH. a may have any nonzero length; only its
@@ -32,18 +29,16 @@
    (inclusive; ±INFINITY allowed). Hits whose t is not representable count as misses.
 
    int cylf_intersect(const cylf_ray*, const cylf_cylinder*, unsigned opts, cylf_hit *hit)
-       The nearest hit with tmin <= t <= tmax: returns CYL_HIT and fills *hit, or CYL_MISS, or a
-       negative CYL_E_* code. On a miss or an error *hit is not touched.
+       The nearest hit with tmin <= t <= tmax: CYL_HIT and *hit filled, CYL_MISS, or a negative
+       CYL_E_* code; on a miss or an error *hit is not touched.
    int cylf_intersect_all(ray, cyl, opts, cylf_hit hits[2])
-       Every hit in range (at most 2), sorted by t; returns the count (0, 1, 2) or an error.
-       Open tube: both wall crossings; capped solid: entry and exit. hits[i >= count] untouched.
-   int cylf_occluded(ray, cyl, opts)
-       1 if anything is hit in range, 0 if not, or an error: the shadow-ray test, the cheapest.
+       Every hit in range, sorted by t (open tube: both wall crossings; capped solid: entry and
+       exit): the count (0, 1, 2) or an error; hits[i >= count] untouched.
+   int cylf_occluded(ray, cyl, opts)      1 if anything is hit in range, 0 if not, or an error.
    cylf_cylinder cylf_from_segment(const float p0[3], const float p1[3], float r)
-       The cylinder whose axis runs from p0 (low cap) to p1 (high cap): pipes, bonds, bones.
-       p0 == p1 gives a = 0 (and h = 0), which intersect reports as CYL_E_ZERO_AXIS.
-   const char *cyl_strerror(int code)
-       A short English description of any return value.
+       The cylinder from p0 (low cap) to p1 (high cap); p0 == p1 gives a = 0 and h = 0, which
+       intersect reports as CYL_E_ZERO_AXIS.
+   const char *cyl_strerror(int code)     a short English description of any return value.
 
    The hit. t; t_err: the exact intersection of the given (already rounded) inputs with the
    reported part lies in [t − t_err, t + t_err] (a residual bound, N5); n: unit normal, facing
@@ -71,7 +66,6 @@
      CYL_E_ZERO_AXIS (-4) a == 0                CYL_E_OPTION (-8) unknown or compiled-out bit
 
    OPTIONS (bits of opts)
-   =======
      CYL_CAPS          solid capped cylinder instead of the open tube
      CYL_OUTWARD       outward normal instead of the ray-facing one
      CYL_NO_TANGENT    grazing contacts within the tangent tolerance are misses
@@ -85,7 +79,6 @@
    option not given folds away at each call site.
 
    CONFIGURATION (define before including)
-   =============
      macro                 default                      effect
      CYL_NO_FLOAT          undefined                    leave out cylf_* (and its code)
      CYL_NO_DOUBLE         undefined                    leave out cyld_*: no double anywhere
@@ -104,7 +97,6 @@
    Gone in v2 (#error): CYL_NO_FAST_PATH and CYL_INTERNAL (one path, internals follow CYL_DEF).
 
    ACCURACY
-   ========
    Against the exact MPFR reference of ref/ (`make test V=2`: 1000 cases per family, caps on
    and off, seed 20261122; `make report V=2` for every figure): t_err held the exact t on
    every hit of every family; no misclassification beyond the band on the benign families
@@ -112,10 +104,8 @@
    within 0.5 ulps; the double API within 4.34 ulps on walls and 9.78 on caps (a cap crossing
    inherits the cancellation of z0 + h/2, a plain tier's limit, N6), against the 4 ulps aimed at.
 
-   WHAT IT DOES NOT DO
-   ===================
-   No ray packets or SIMD, no BVH, no oblique cylinders or cones, no texture coordinates beyond
-   v, no nudging of spawned rays (use tmin or the previous hit's t_err). Needs IEEE-754 with
+   NOT DONE: ray packets or SIMD, BVHs, oblique cylinders or cones, texture coordinates beyond
+   v, nudging spawned rays (use tmin or the previous hit's t_err). Needs IEEE-754 with
    FLT_EVAL_METHOD == 0 and no -ffast-math (both refused by #error).
 
    LICENSE: MIT. Copyright (c) 2026 the cylinder_isect developers.
@@ -148,9 +138,8 @@
 #error "cylinder_isect.h: needs FLT_EVAL_METHOD == 0 (no excess precision, e.g. x87); use SSE2, or -fexcess-precision=fast"
 #endif
 
-/* Entry points forced inline where the compiler allows it, so constant options fold at every
-   call site (gcc keeps an entry point called from several places out of line otherwise); the
-   internal functions of the hot path always (CYL__INL), the exact path never (CYL__COLD). */
+/* Forced inline where the compiler allows it, so that constant options fold at every call
+   site (gcc keeps an entry point called from several places out of line otherwise). */
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE_SIZE__)
 #define CYL__INL static inline __attribute__((always_inline))
 #else
@@ -269,10 +258,9 @@ CYL_DEF const char *cyl_strerror(int code)
     }
 }
 
-/* One body, included once per precision with these parameters (the body #undefs them):
-     CYL__R  the API's type         CYL__N(x)  public name       CYL__P(x)  private name
-     CYL__LD 1: the working type L is double, 0: float
-     CYL__TANG, CYL__PARA  the tolerances   CYL__UINT, CYL__MANT, CYL__EBIAS  R's bit layout */
+/* One body, included once per precision with these parameters (the body #undefs them): CYL__R
+   the API's type, CYL__N/CYL__P public/private names, CYL__LD 1 if the working type L is double,
+   CYL__TANG, CYL__PARA the tolerances, CYL__UINT, CYL__MANT, CYL__EBIAS R's bit layout. */
 #ifndef CYL_NO_DOUBLE
 #define CYL__BODY 1
 #define CYL__R double
@@ -349,7 +337,7 @@ typedef struct CYL__N(ray) { CYL__R o[3], d[3], tmin, tmax; } CYL__N(ray);
 typedef struct CYL__N(cylinder) { CYL__R c[3], a[3], r, h; } CYL__N(cylinder);
 typedef struct CYL__N(hit) { CYL__R t, t_err, n[3], v; int part; unsigned flags; } CYL__N(hit);
 
-/* The frame (N1): the inputs in L, possibly scaled (t and v are then 2^et and 2^ev times the
+/* The frame (N1): the inputs in L, scaled on the exact path (t, v there 2^et, 2^ev times the
    frame's), and everything derived from them once. */
 typedef struct CYL__P(frame) {
     CYL__L w[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, tlim, vlim, lo, hi;
@@ -362,9 +350,6 @@ typedef struct CYL__P(cross) { CYL__L t, h; int part, ok; unsigned flags; } CYL_
 
 static int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                         int want, CYL__N(hit) *hits);
-static inline int CYL__P(expo)(CYL__R x);
-static inline CYL__R CYL__P(scale)(CYL__R x, int k);
-static inline CYL__R CYL__P(toward0)(CYL__R x);
 
 /* ------------------------------------------------------------------ small tools */
 CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return CYL__LABS(x); }
@@ -391,6 +376,41 @@ CYL__INL void CYL__P(mul3)(CYL__L p, const CYL__L x[3], CYL__L z[3])
     z[1] = x[1] * p;
     z[2] = x[2] * p;
 }
+/* x·2^k for any k, in steps of normal powers of two: only the last step can round. */
+static inline CYL__R CYL__P(scale)(CYL__R x, int k)
+{
+    CYL__UINT b;
+    CYL__R p;
+    while (k > CYL__EBIAS || k < 1 - CYL__EBIAS) {
+        int s = k > 0 ? CYL__EBIAS : 1 - CYL__EBIAS;
+        x = CYL__P(scale)(x, s);
+        k -= s;
+    }
+    b = (CYL__UINT)(k + CYL__EBIAS) << (CYL__MANT - 1);
+    CYL__B(memcpy)(&p, &b, sizeof p);
+    return x * p;
+}
+
+/* floor(log2(x)) for finite x > 0 in R, from the exponent bits (subnormals included). */
+static inline int CYL__P(expo)(CYL__R x)
+{
+    CYL__UINT b;
+    int e;
+    CYL__B(memcpy)(&b, &x, sizeof b);
+    e = (int)((b >> (CYL__MANT - 1)) & (CYL__UINT)(2 * CYL__EBIAS + 1));
+    if (e || !(x > 0)) return e - CYL__EBIAS;
+    return CYL__P(expo)(x * CYL__P(scale)(1, CYL__MANT)) - CYL__MANT; /* a subnormal */
+}
+
+/* The neighbour of x toward zero in R (x finite, nonzero). */
+static inline CYL__R CYL__P(toward0)(CYL__R x)
+{
+    CYL__UINT b;
+    CYL__B(memcpy)(&b, &x, sizeof b);
+    b -= 1u, CYL__B(memcpy)(&x, &b, sizeof x);
+    return x;
+}
+
 /* ab − cd within 2u of itself (Kahan's algorithm with FMA; Jeannerod, Louvet, Muller 2013). */
 CYL__INL CYL__L CYL__P(dop)(CYL__L a, CYL__L b, CYL__L c, CYL__L d)
 {
@@ -494,15 +514,10 @@ CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f)
     return f->A <= p2 * f->ad;
 }
 
-/* The rays the exact path answers: parallel ones, and where the plain s = a × d of inputs in
-   the working type loses log2(1/sin) bits, which the wall decision inherits as u·|w|/(r sin)
-   of e, those within 2^-8 of the axis' direction, for which it forms s with FMA (N1). Float
-   inputs in double give exact products. */
+/* The rays the exact path answers: parallel ones and, unless the inputs' products are exact in
+   L (float in double), those within 2^-8 of the axis direction, whose plain s loses bits (N6). */
 CYL__INL int CYL__P(steep)(const CYL__P(frame) *f)
-{
-    if (sizeof(CYL__L) > sizeof(CYL__R)) return CYL__P(parallel)(f);
-    return 65536 * f->A < f->ad; /* parallel ones included */
-}
+{ return sizeof(CYL__L) > sizeof(CYL__R) ? CYL__P(parallel)(f) : 65536 * f->A < f->ad; }
 
 /* The wall (N3, N6): 0 the ray line misses the infinite tube, 1 a tangent contact (e within the
    band), 2 two crossings; e = D/(r²A). */
@@ -513,27 +528,16 @@ CYL__INL int CYL__P(classify_wall)(const CYL__P(frame) *f)
     return f->D >= -band ? 1 : 0;
 }
 
-/* The two wall roots in t order from the stable pair (N4): with q = −(B + sgn(B)√(|a|²D)),
-   q² >= AC, so B's sign orders q/A and C/q up to their rounding. A contact inside the band without a real root
-   (D <= 0) is the point of closest approach, twice. Returns √(|a|²D). */
+/* The two wall roots in t order from the stable pair q = −(B + sgn(B)√(|a|²D)), q/A and C/q
+   (N4); a contact in the band without a real root (D <= 0) is the point of closest approach,
+   twice. Returns √(|a|²D). */
 CYL__INL CYL__L CYL__P(wall_roots)(const CYL__P(frame) *f, CYL__L t[2])
 {
     CYL__L sq = CYL__LSQRT(f->aa * CYL__P(max)(f->D, 0)), q;
-    if (f->B < 0) {
-        q = sq - f->B;
-        t[0] = f->C / q;
-        t[1] = q / f->A;
-    } else {
-        q = -(f->B + sq);
-        t[0] = q / f->A;
-        t[1] = f->C / q;
-    }
+    if (f->B < 0) q = sq - f->B, t[0] = f->C / q, t[1] = q / f->A; /* q² >= AC: in order */
+    else q = -(f->B + sq), t[0] = q / f->A, t[1] = f->C / q;
     if (!(f->D > 0)) t[0] = t[1] = -f->B / f->A;
-    if (t[0] > t[1]) { /* two crossings within a rounding of each other */
-        q = t[0];
-        t[0] = t[1];
-        t[1] = q;
-    }
+    if (t[0] > t[1]) q = t[0], t[0] = t[1], t[1] = q; /* but for their rounding */
     return sq;
 }
 
@@ -547,11 +551,10 @@ CYL__INL void CYL__P(slab)(const CYL__P(frame) *f, CYL__L s[2])
     s[1] = CYL__P(max)(p0, p1);
 }
 
-/* The rim: is t inside the slab, ends included. */
+/* The rim: is t inside the slab, ends included? */
 CYL__INL int CYL__P(in_slab)(CYL__L t, const CYL__L s[2]) { return !(t < s[0]) && !(t > s[1]); }
 
-/* The t range, ends included, and t representable in the API's type (a test the double API's
-   unscaled frame never needs). */
+/* The t range, ends included, and t representable in R (the double API's hot path's t is). */
 CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t)
 {
     int rep = (sizeof(CYL__L) == sizeof(CYL__R) && f->et == 0) || CYL__P(abs)(t) <= f->tlim;
@@ -686,8 +689,7 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsig
     hit->part = x->part, hit->flags = x->flags;
 }
 
-/* The answer on a frame: the crossings in t order, each emitted as it is found; occluded and
-   intersect stop at the first one in range. */
+/* The crossings in t order, each emitted as found; occluded and intersect stop at the first. */
 CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits)
 {
     CYL__L t[2], s[2], sq;
@@ -707,41 +709,6 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
 }
 
 /* ------------------------------------------------------------------ the exact path */
-/* floor(log2(x)) for finite x > 0 in R, from the exponent bits (subnormals included). */
-static inline int CYL__P(expo)(CYL__R x)
-{
-    CYL__UINT b;
-    int e;
-    CYL__B(memcpy)(&b, &x, sizeof b);
-    e = (int)((b >> (CYL__MANT - 1)) & (CYL__UINT)(2 * CYL__EBIAS + 1));
-    if (e || !(x > 0)) return e - CYL__EBIAS;
-    return CYL__P(expo)(x * CYL__P(scale)(1, CYL__MANT)) - CYL__MANT; /* a subnormal */
-}
-
-/* x·2^k for any k, in steps of normal powers of two: only the last step can round. */
-static inline CYL__R CYL__P(scale)(CYL__R x, int k)
-{
-    CYL__UINT b;
-    CYL__R p;
-    while (k > CYL__EBIAS || k < 1 - CYL__EBIAS) {
-        int s = k > 0 ? CYL__EBIAS : 1 - CYL__EBIAS;
-        x = CYL__P(scale)(x, s);
-        k -= s;
-    }
-    b = (CYL__UINT)(k + CYL__EBIAS) << (CYL__MANT - 1);
-    CYL__B(memcpy)(&p, &b, sizeof p);
-    return x * p;
-}
-
-/* The neighbour of x toward zero in R (x finite, nonzero). */
-static inline CYL__R CYL__P(toward0)(CYL__R x)
-{
-    CYL__UINT b;
-    CYL__B(memcpy)(&b, &x, sizeof b);
-    b -= 1u, CYL__B(memcpy)(&x, &b, sizeof x);
-    return x;
-}
-
 /* Validation in the documented order (the hot path sent what its range test refused). */
 static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
 {
