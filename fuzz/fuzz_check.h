@@ -446,6 +446,10 @@ static void fz_check_hit(const char *what, const fz_prob *p, const fz_geo *g, un
     fz_real eerr, e = fz_tangent_e(p, g, &eerr);
     if (isfinite(e) && isfinite(eerr) && h->part == CYL_SIDE) {
       fz_real band = tan_tol + 64 * u * (fz_abssum(g->w) + p->r) / p->r + eerr;
+      /* v2's default tier computes e from the plain o - c, whose rounding u|o - c| moves the
+         line's distance rho from the axis: 2 rho/r times that in e (v2's N6) */
+      if (CYL_VERSION_MAJOR >= 2 && !(opts & CYL_PRECISE))
+        band += 128 * u * (fz_abssum(g->w) + p->r) / p->r * sqrtl(fabsl(1 - e));
       if ((h->flags & CYL_F_TANGENT) && fabsl(e) > 2 * band)
         fz_failf("%s: flagged tangent but e=1-rho^2/r^2=%Lg is far outside the band %Lg", what, e, tan_tol);
       if (!(h->flags & CYL_F_TANGENT) && e < -2 * band)
@@ -595,8 +599,10 @@ static int fz_well_conditioned(const fz_prob *p, const fz_geo *g, unsigned opts,
     return 0;
   /* Tangent band and hit/miss of the infinite tube. */
   e = fz_tangent_e(p, g, &eerr);
+  /* a perturbation of the problem moves rho (|1 - e| = (rho/r)^2 - 1 for a miss) by uf*scale,
+     and e by 2 rho/r times that */
   if (!(fabsl(e) > FZ_BAND_FACTOR * (uf > FZ_U_D ? (fz_real)CYL_TANGENT_TOLF : (fz_real)CYL_TANGENT_TOL) +
-                       FZ_COND_ULPS * uf * scale / p->r))
+                       FZ_COND_ULPS * uf * scale / p->r * (1 + 2 * sqrtl(fabsl(1 - e)))))
     return 0;
   /* Candidate points: the two wall crossings and the two cap planes. */
   if (g->sd > 0 && e > 0) {

@@ -886,8 +886,8 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap: the plane's
        residual over |ζ| less its bound. The float API computed in double adds t's rounding.
    N6. The plain tier's limits, all from rounding the quantities each decision compares: e =
-       D/(r²A) carries a few u·(1 + |o − c|/r), so the tangent band's edges blur by that for
-       far origins; a rim, u·(|o − c| + |t d| + h)/h of the half height; the rim of a flat disk
+       D/(r²A) carries a few u·(1 + |o − c|/r)(1 + 2ρ/r) (ρ: the line's distance from the
+       axis), so the tangent band's edges blur by that for far origins; a rim, u·(|o − c| + |t d| + h)/h of the half height; the rim of a flat disk
        seen along its axis from an origin on its wall, about u·r/(h·sin) of its margin; a t
        range end, u·|t|; a cap crossing, the cancellation of z0 + Ha times u. A ray within
        2^-8 of the axis' direction would add u/sin to e (far origins: u·|w|/(r·sin)); the
