@@ -2,15 +2,21 @@
 """report.py: bench/REPORT.md, bench/error_vs_time.png and docs/accuracy.md's table.
 
     python bench/report.py --results RESULTS.json [--times T2.json ...] --insn INSN.tsv \
-        --md REPORT.md --png PLOT.png [--doc DOC.md]                      (run by `make report`)
-    python bench/report.py --insn-table INSN.tsv                          (run by `make insn`)
+        --md REPORT.md --png PLOT.png [--doc DOC.md] [--table TABLE.md] \
+        [--header HDR --goal CMD]                                         (run by `make report`)
+    python bench/report.py --insn-table INSN.tsv [--header HDR]           (run by `make insn`)
 
 RESULTS.json: build/bench/bench's accuracy and first timing; T*.json: more timing runs of the
 same binary (--time-only); every ns shown is the median over the runs, every time ratio the
 median of the runs' ratios. INSN.tsv: instructions per call under callgrind (mk/bench.mk).
 DOC.md (docs/accuracy.md) gets the accuracy-and-cost table between its <!-- headline:begin -->
-and <!-- headline:end --> markers. Needs matplotlib for the plot (build/report-venv). Every
-number comes from those files; nothing here is measured.
+and <!-- headline:end --> markers; TABLE.md gets the same table as a file of its own (`make
+report V=2`, which leaves every committed file alone). HDR: the header measured, named in the
+report when it is not ./cylinder_isect.h (its git revision comes in $BENCH_LIB_REV); CMD: the
+command that regenerates the report, named in it. Variants the measured header does not
+provide (RESULTS.json's "unavailable": CYL_PRECISE where it defines CYL_NO_PRECISE) are shown
+as n/a. Needs matplotlib for the plot (build/report-venv). Every number comes from those
+files; nothing here is measured.
 """
 import argparse
 import json
@@ -35,6 +41,9 @@ COST_TARGETS = [("lib+NO_ERRBOUND+NO_NORMAL", 1.3, 1.15), ("lib", 2.0, 1.5),
 COST_FAMILY = "well"
 ERR_FLOOR = 0.01          # ulps plotted in place of an error of exactly 0
 PNAME = {24: "float", 53: "double"}
+DEFAULT_HEADER = "cylinder_isect.h"   # v1, the committed report's subject
+NA_NOTE = ("- **n/a**: the variant is not available in the measured header (its call returns "
+           "an error: `CYL_PRECISE` where the header defines `CYL_NO_PRECISE`).")
 
 
 def band(prec):
@@ -116,22 +125,34 @@ def read_insn(path):
     return out
 
 
-def insn_table(path):
+def insn_table(path, header=DEFAULT_HEADER):
     """`make insn`: the counts of the headline variants, capped sets, and the cost ratios."""
     I = read_insn(path)
     fams = list(dict.fromkeys(k[1] for k in I))
+    # a variant with no count at all was left out by the benchmark: not in this header
+    counted = {(k[0], k[3]) for k in I}
+
+    def cell(prec, fam, v):
+        return fmt(I.get((prec, fam, 1, v)), 4) if (prec, v) in counted else "n/a"
+
+    if header != DEFAULT_HEADER:
+        print(f"Header: {header} at commit {os.environ.get('BENCH_LIB_REV') or '?'}\n")
     print("Instructions per capped call (callgrind; the empty loop subtracted)\n")
     print("| precision | family | " + " | ".join(LABEL[v] for v in HEADLINE) + " |")
     print("|---|---|" + "---:|" * len(HEADLINE))
     for prec in (24, 53):
         for fam in fams:
             print(f"| {PNAME[prec]} | {fam} | " +
-                  " | ".join(fmt(I.get((prec, fam, 1, v)), 4) for v in HEADLINE) + " |")
+                  " | ".join(cell(prec, fam, v) for v in HEADLINE) + " |")
     print()
     for prec in (24, 53):
         ep = I.get((prec, COST_FAMILY, 1, "endpoint"))
         for v, lim, _ in COST_TARGETS:
             x = I.get((prec, COST_FAMILY, 1, v))
+            if (prec, v) not in counted and I:
+                print(f"{PNAME[prec]} {v} / endpoint, {COST_FAMILY} capped: n/a "
+                      f"(not available in this header)")
+                continue
             if x is None or not ep:
                 continue
             print(f"{PNAME[prec]} {v} / endpoint, {COST_FAMILY} capped: {x / ep:.2f} "
@@ -147,15 +168,32 @@ def main():
     ap.add_argument("--md")
     ap.add_argument("--png")
     ap.add_argument("--doc")
+    ap.add_argument("--table")
+    ap.add_argument("--header", default=DEFAULT_HEADER)
+    ap.add_argument("--goal", default="make report")
     args = ap.parse_args()
     if args.insn_table:
-        insn_table(args.insn_table)
+        insn_table(args.insn_table, args.header)
         return
     if not (args.results and args.insn and args.md and args.png):
         ap.error("--results, --insn, --md and --png are needed")
     png_path = args.png
+    for p in (args.md, args.png, args.table):
+        if p and os.path.dirname(p):
+            os.makedirs(os.path.dirname(p), exist_ok=True)
+    # the report's subject: v1 (./cylinder_isect.h) or the header named by --header
+    hdr = args.header
+    title = "cylinder_isect" if hdr == DEFAULT_HEADER else hdr
+    rev = os.environ.get('BENCH_LIB_REV') or '?'
+    goal = args.goal
+    bdir = os.path.dirname(args.results) or "."
     with open(args.results) as f:
         R = json.load(f)
+    unavailable = set(R.get("unavailable") or [])
+
+    def na(prec, v):
+        """the benchmark left the variant out: the header does not provide it"""
+        return f"{PNAME[prec]} {v}" in unavailable
     runs = [{key(r): r["ns"] for r in R["rows"]}]
     for t in args.times:
         with open(t) as f:
@@ -197,17 +235,17 @@ def main():
 
     L = []
     now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
-    L.append("# cylinder_isect: error and cost against the alternatives\n")
-    L.append(f"Generated by `make report` on {now}. Regenerate with `make report` "
+    L.append(f"# {title}: error and cost against the alternatives\n")
+    L.append(f"Generated by `{goal}` on {now}. Regenerate with `{goal}` "
              f"(options: `BENCH_SEED=... BENCH_N=... BENCH_RUNS=...`); the raw numbers are in "
-             f"`build/bench/results.json`, `build/bench/times-*.json` and "
-             f"`build/bench/insn.tsv`, a single case is shown in full by "
-             f"`build/bench/probe PREC FAMILY CAPS INDEX`.\n")
+             f"`{args.results}`, `{bdir}/times-*.json` and "
+             f"`{args.insn}`, a single case is shown in full by "
+             f"`{bdir}/probe PREC FAMILY CAPS INDEX`.\n")
     L.append("| | |\n|---|---|")
     L.append(f"| machine | {cpu_model()}, {os.cpu_count()} logical cores, {platform.machine()}, "
              f"{platform.system()} {platform.release()} |")
     L.append(f"| compiler | gcc {R.get('compiler', '?')}, `{R.get('cflags', '?')}` (+ `-std=c99`) |")
-    L.append(f"| library | cylinder_isect.h at commit {os.environ.get('BENCH_LIB_REV') or '?'} |")
+    L.append(f"| library | {hdr} at commit {rev} |")
     L.append(f"| seed | {R['seed']} |")
     L.append(f"| cases | {R['n']} per family x caps on/off x precision; every variant runs the "
              f"same cases |")
@@ -251,6 +289,8 @@ def main():
         for v in HEADLINE:
             rs = sel(prec, v)
             if not rs:
+                if na(prec, v):
+                    hl.append((f"{PNAME[prec]} {LABEL[v]}",) + ("n/a",) * 5)
                 continue
             a = agg(rs)
             w = one(prec, COST_FAMILY, 1, v)
@@ -279,6 +319,8 @@ def main():
         "- **t_err failures**: hits whose exact t lies outside [t − t_err, t + t_err], of those "
         "checked; `-`: no error bound.",
     ]
+    if any(na(prec, v) for prec in (24, 53) for v in HEADLINE):
+        hl_notes.append(NA_NOTE)
     L.extend(hl_lines)
     L.append("")
     L.extend(hl_notes)
@@ -325,6 +367,11 @@ def main():
                  f"{fmt(rmax)} over family x caps (each the median of {nruns} runs) |")
     for prec in (24, 53):
         for v, lim, aim in COST_TARGETS:
+            if na(prec, v):
+                L.append(f"| 4. {v}: instructions per capped call on the {COST_FAMILY} family at "
+                         f"most {lim}x the end-point routine's | {PNAME[prec]} | n/a | not "
+                         f"available in this build |")
+                continue
             ir = insn_ratio(prec, COST_FAMILY, 1, v, "endpoint")
             tr = time_ratio(prec, COST_FAMILY, 1, v, "endpoint")
             x, y = INSN.get((prec, COST_FAMILY, 1, v)), INSN.get((prec, COST_FAMILY, 1, "endpoint"))
@@ -348,13 +395,16 @@ def main():
             cells = []
             for v in HEADLINE:
                 r = one(prec, fam, 1, v)
-                cells.append(f"{fmt(r['insn'], 4)} / {fmt(r['ns'], 3)}" if r else "-")
+                cells.append(f"{fmt(r['insn'], 4)} / {fmt(r['ns'], 3)}" if r else
+                             "n/a" if na(prec, v) else "-")
             for v, _, _ in COST_TARGETS:
-                cells.append(f"{fmt(insn_ratio(prec, fam, 1, v, 'endpoint'), 3)} "
+                cells.append("n/a" if na(prec, v) else
+                             f"{fmt(insn_ratio(prec, fam, 1, v, 'endpoint'), 3)} "
                              f"({fmt(time_ratio(prec, fam, 1, v, 'endpoint'), 3)})")
             L.append(f"| {PNAME[prec]} | {fam} | " + " | ".join(cells) + " |")
     L.append("")
-    L.append("![error against time](error_vs_time.png)\n")
+    png_rel = os.path.relpath(png_path, os.path.dirname(args.md) or ".")
+    L.append(f"![error against time]({png_rel})\n")
     L.append("x: ns per call (mean over the group's families and caps variants); y: worst "
              "t error in ulps of the exact t over the well-conditioned hits where the variant "
              "agrees with the reference on hit, part and crossing (so that the inherent error of "
@@ -390,12 +440,16 @@ def main():
         f.write("\n".join(L) + "\n")
 
     # the headline table and its column notes also go into docs/accuracy.md, between its
-    # markers (scripts/sync-readme.py copies them into the README)
+    # markers (scripts/sync-readme.py copies them into the README), or into a file of its own
+    lib = "" if hdr == DEFAULT_HEADER else f"{hdr} at commit {rev}; "
+    block = "\n".join(
+        [f"{lib}Seed {R['seed']}, {R['n']} cases per family x caps x precision, {now}; every "
+         f"figure from `{goal}` (all of them in {args.md}).", ""]
+        + hl_lines + [""] + hl_notes)
+    if args.table:
+        with open(args.table, "w") as f:
+            f.write(block + "\n")
     if args.doc:
-        block = "\n".join(
-            [f"Seed {R['seed']}, {R['n']} cases per family x caps x precision, {now}; every "
-             f"figure from `make report` (all of them in bench/REPORT.md).", ""]
-            + hl_lines + [""] + hl_notes)
         with open(args.doc) as f:
             text = f.read()
         b, e = "<!-- headline:begin -->", "<!-- headline:end -->"
@@ -449,7 +503,7 @@ def main():
         ax.grid(True, which="both", alpha=0.3)
     handles, labels = axes[0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=8, frameon=False)
-    fig.suptitle(f"cylinder_isect: error against run time (seed {R['seed']}, "
+    fig.suptitle(f"{title}: error against run time (seed {R['seed']}, "
                  f"{R['n']} cases per family; hollow = misclassifies beyond 2^-(p-8))",
                  fontsize=10)
     fig.tight_layout(rect=(0, 0.12, 1, 0.95))
