@@ -222,6 +222,15 @@
 #ifndef CYL_FMAF
 #define CYL_FMAF(a, b, c) CYL__B(fmaf)(a, b, c)
 #endif
+/* A float the optimizer must take as it is: gcc 12's SLP vectorizer drops (double)(float) round
+   trips that a caller's conversions and the float API computed in double pair up (NUMERICS). */
+#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))
+#define CYL__OPAQUE(x) __asm__("" : "+x"(x))
+#elif (defined(__GNUC__) || defined(__clang__)) && defined(__aarch64__)
+#define CYL__OPAQUE(x) __asm__("" : "+w"(x))
+#else
+#define CYL__OPAQUE(x) (void)0
+#endif
 #ifndef CYL_FMA
 #define CYL_FMA(a, b, c) CYL__B(fma)(a, b, c)
 #endif
@@ -340,8 +349,8 @@ typedef struct CYL__N(hit) { CYL__R t, t_err, n[3], v; int part; unsigned flags;
 /* The frame (N1): the inputs in L, scaled on the exact path (t, v there 2^et, 2^ev times the
    frame's), and everything derived from them once. */
 typedef struct CYL__P(frame) {
-    CYL__L w[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, tlim, vlim, lo, hi;
-    CYL__L s[3], m[3], aa, ad, aww, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha;
+    CYL__L w[3], wl[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, tlim, vlim, lo, hi;
+    CYL__L s[3], m[3], aa, ad, mm, aww, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha;
     int et, ev, exact, cold; /* cold: the exact path's frame (FMA products, unscaled output) */
 } CYL__P(frame);
 
@@ -425,6 +434,13 @@ CYL__INL void CYL__P(cross_exact)(const CYL__L x[3], const CYL__L y[3], CYL__L z
     z[2] = CYL__P(dop)(x[0], y[1], x[1], y[0]);
 }
 
+/* An input in L: a float as the caller stored it (CYL__OPAQUE), for the float API in double. */
+CYL__INL CYL__L CYL__P(in)(CYL__R x)
+{
+    if (sizeof(CYL__L) > sizeof(CYL__R)) CYL__OPAQUE(x);
+    return (CYL__L)x;
+}
+
 /* ------------------------------------------------------------------ entry points */
 CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits);
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f);
@@ -438,12 +454,12 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
                          int want, CYL__N(hit) *hits)
 {
     CYL__P(frame) f; /* filled without loops: gcc then keeps the frame in registers */
-    f.w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0], f.d[0] = (CYL__L)ray->d[0];
-    f.w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1], f.d[1] = (CYL__L)ray->d[1];
-    f.w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2], f.d[2] = (CYL__L)ray->d[2];
-    f.a[0] = (CYL__L)cyl->a[0], f.a[1] = (CYL__L)cyl->a[1], f.a[2] = (CYL__L)cyl->a[2];
-    f.r = (CYL__L)cyl->r, f.H = (CYL__L)cyl->h * CYL__K(0.5);
-    f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
+    f.w[0] = CYL__P(in)(ray->o[0]) - CYL__P(in)(cyl->c[0]), f.d[0] = CYL__P(in)(ray->d[0]);
+    f.w[1] = CYL__P(in)(ray->o[1]) - CYL__P(in)(cyl->c[1]), f.d[1] = CYL__P(in)(ray->d[1]);
+    f.w[2] = CYL__P(in)(ray->o[2]) - CYL__P(in)(cyl->c[2]), f.d[2] = CYL__P(in)(ray->d[2]);
+    f.a[0] = CYL__P(in)(cyl->a[0]), f.a[1] = CYL__P(in)(cyl->a[1]), f.a[2] = CYL__P(in)(cyl->a[2]);
+    f.r = CYL__P(in)(cyl->r), f.H = CYL__P(in)(cyl->h) * CYL__K(0.5);
+    f.tmin = f.rmin = CYL__P(in)(ray->tmin), f.tmax = f.rmax = CYL__P(in)(ray->tmax);
     f.tlim = (CYL__L)CYL__RMAX, f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX);
     f.lo = CYL__HOT_LO, f.hi = CYL__HOT_HI;
     f.et = f.ev = f.cold = 0, f.exact = 1;
@@ -478,10 +494,12 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
    at most hi, which every NaN, infinity or zero of the inputs fails too. */
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
-    CYL__L mm;
-    if (f->cold) {
+    CYL__L ml[3];
+    if (f->cold) { /* w = w + wl exactly there */
         CYL__P(cross_exact)(f->a, f->d, f->s);
         CYL__P(cross_exact)(f->a, f->w, f->m);
+        CYL__P(cross3)(f->a, f->wl, ml);
+        CYL__P(lin)(1, f->m, 1, ml, f->m);
     } else {
         CYL__P(cross3)(f->a, f->d, f->s);
         CYL__P(cross3)(f->a, f->w, f->m);
@@ -491,14 +509,15 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     f->B = CYL__P(dot)(f->m, f->s);
     f->r2 = f->r * f->r;
     f->r2aa = f->r2 * f->aa;
-    mm = CYL__P(dot)(f->m, f->m);
-    f->C = mm - f->r2aa;
-    f->P = CYL__P(dot)(f->w, f->s);
+    f->mm = CYL__P(dot)(f->m, f->m);
+    f->C = f->mm - f->r2aa;
+    /* P = w·s = −m·d: the exact path's m is accurate (N1) and −m·d then has no error of |w| */
+    f->P = f->cold ? -CYL__P(dot)(f->m, f->d) : CYL__P(dot)(f->w, f->s);
     f->D = f->r2 * f->A - f->P * f->P; /* B² − AC = |a|²D (N3) */
     f->z0 = CYL__P(dot)(f->a, f->w);
     f->zeta = CYL__P(dot)(f->a, f->d);
     f->ad = f->A + f->zeta * f->zeta; /* |a|²|d|² */
-    f->aww = mm + f->z0 * f->z0;      /* |a|²|w|² */
+    f->aww = f->mm + f->z0 * f->z0;   /* |a|²|w|² */
     f->sqaa = CYL__LSQRT(f->aa);
     f->Ha = f->H * f->sqaa;
     return (CYL__P(min)(CYL__P(min)(f->r2aa, f->ad), f->Ha) >= f->lo) &
@@ -515,9 +534,13 @@ CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f)
 }
 
 /* The rays the exact path answers: parallel ones and, unless the inputs' products are exact in
-   L (float in double), those within 2^-8 of the axis direction, whose plain s loses bits (N6). */
+   L (float in double), those whose plain s = a × d or m = a × w loses more than 8 bits (N6): d
+   or o − c within 2^-8 of the axis direction. */
 CYL__INL int CYL__P(steep)(const CYL__P(frame) *f)
-{ return sizeof(CYL__L) > sizeof(CYL__R) ? CYL__P(parallel)(f) : 65536 * f->A < f->ad; }
+{
+    if (sizeof(CYL__L) > sizeof(CYL__R)) return CYL__P(parallel)(f);
+    return (65536 * f->A < f->ad) | (65536 * f->mm < f->aww);
+}
 
 /* The wall (N3, N6): 0 the ray line misses the infinite tube, 1 a tangent contact (e within the
    band), 2 two crossings; e = D/(r²A). */
@@ -677,6 +700,7 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsig
     tr = (CYL__R)t;
     vr = (CYL__R)v;
     if (sizeof(CYL__L) > sizeof(CYL__R)) {
+        CYL__OPAQUE(tr);
         if (!(opts & CYL_NO_ERRBOUND)) { /* t rounded to R: its rounding joins the bound */
             err = (err + CYL__P(abs)((CYL__L)tr - t)) * (1 + CYL__K(2.384185791015625e-07)) +
                   CYL__K(1.40129846432481707e-45);
@@ -742,15 +766,18 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     CYL__R oc = CYL__P(amax3)(ray->o), cc = CYL__P(amax3)(cyl->c), m0 = oc > cc ? oc : cc;
     CYL__L wr[3], m;
     int j = CYL__P(expo)(m0 > cyl->r ? m0 : cyl->r), kl, kd, ka, i;
-    for (i = 0; i < 3; i++)
-        wr[i] = CYL__LT(scale)((CYL__L)ray->o[i], -j) - CYL__LT(scale)((CYL__L)cyl->c[i], -j);
+    for (i = 0; i < 3; i++) { /* o − c = wr + f->wl exactly (TwoSum; Knuth) */
+        CYL__L x = CYL__LT(scale)((CYL__L)ray->o[i], -j), y = -CYL__LT(scale)((CYL__L)cyl->c[i], -j);
+        CYL__L z = (wr[i] = x + y) - x;
+        f->wl[i] = (x - (wr[i] - z)) + (y - z);
+    }
     m = CYL__P(max)(CYL__P(max)(CYL__P(abs)(wr[0]), CYL__P(abs)(wr[1])), CYL__P(abs)(wr[2]));
     m = CYL__P(max)(m, CYL__LT(scale)((CYL__L)cyl->r, -j));
     kl = (m > 0 ? CYL__LT(expo)(m) : 0) + j;
     kd = CYL__P(expo)(CYL__P(amax3)(ray->d));
     ka = CYL__P(expo)(CYL__P(amax3)(cyl->a));
     for (i = 0; i < 3; i++) {
-        f->w[i] = CYL__LT(scale)(wr[i], j - kl);
+        f->w[i] = CYL__LT(scale)(wr[i], j - kl), f->wl[i] = CYL__LT(scale)(f->wl[i], j - kl);
         f->d[i] = CYL__LT(scale)((CYL__L)ray->d[i], -kd);
         f->a[i] = CYL__LT(scale)((CYL__L)cyl->a[i], -ka);
     }
