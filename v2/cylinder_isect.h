@@ -490,11 +490,11 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 
 /* ------------------------------------------------------------------ frame */
 /* Everything the decisions use, from the cross products s = a × d and m = a × w (N1), and the
-   range test (N2) on derived values: |a|²|d|², r²|a|² and Ha at least lo, |a|⁴|d|²(|w|² + r²)
-   at most hi, which every NaN, infinity or zero of the inputs fails too. */
+   range test (N2) on derived values: |a|²|d|², r²|a|² and Ha at least lo; |a|²(|w|² + r²), D's
+   size and |a|²D's at most hi; every NaN, infinity or zero of the inputs fails it too. */
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
-    CYL__L ml[3];
+    CYL__L ml[3], L2;
     if (f->cold) { /* w = w + wl exactly there */
         CYL__P(cross_exact)(f->a, f->d, f->s);
         CYL__P(cross_exact)(f->a, f->w, f->m);
@@ -520,8 +520,9 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     f->aww = f->mm + f->z0 * f->z0;   /* |a|²|w|² */
     f->sqaa = CYL__LSQRT(f->aa);
     f->Ha = f->H * f->sqaa;
-    return (CYL__P(min)(CYL__P(min)(f->r2aa, f->ad), f->Ha) >= f->lo) &
-           ((f->aww + f->r2aa) * f->ad <= f->hi) & (f->r > 0) &
+    L2 = (f->aww + f->r2aa) * f->ad; /* |a|²|d|²·|a|²(|w|² + r²), about |a|²D */
+    return (CYL__P(min)(CYL__P(min)(f->r2aa, f->ad), f->Ha) >= f->lo) & (f->r > 0) &
+           (CYL__P(max)(L2, f->aww + f->r2aa) <= f->hi) & (L2 <= f->hi * f->aa) &
            ((f->Ha <= CYL__LMAX) | (f->H > CYL__LMAX)) & (f->tmin <= f->tmax);
 }
 
