@@ -222,8 +222,8 @@
 #ifndef CYL_FMAF
 #define CYL_FMAF(a, b, c) CYL__B(fmaf)(a, b, c)
 #endif
-/* A float the optimizer must take as it is: gcc 12's SLP vectorizer drops (double)(float) round
-   trips that a caller's conversions and the float API computed in double pair up (NUMERICS). */
+/* A float taken as it is: gcc 12's SLP vectorizer drops (double)(float) round trips that a
+   caller's conversions and the float API in double pair up (NUMERICS.md). */
 #if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))
 #define CYL__OPAQUE(x) __asm__("" : "+x"(x))
 #elif (defined(__GNUC__) || defined(__clang__)) && defined(__aarch64__)
@@ -302,10 +302,8 @@ CYL_DEF const char *cyl_strerror(int code)
 
 #else /* CYL__BODY: one precision, written once */
 
-/* R's constants, and those of the working type L (the same, or double for a wide float API).
-   The range (N2): the hot path takes |a|²|d|², r²|a|², Ha from 2^-300 and |a|⁴|d|²(|w|² + r²)
-   up to 2^900 (L = double; 2^-60 and 2^120 for float); the exact path scales |a|, |d| and
-   max(|w|, r) to [1, 2) and takes r²|a|² down to 2^-600 (2^-76). */
+/* R's constants and the working type L's. The range (N2), L = double (float): lower 2^-300
+   (2^-60), upper 2^900 (2^120); scaled on the exact path, r²|a|² down to 2^-600 (2^-76). */
 #if CYL__MANT == 24
 #define CYL__RMAX FLT_MAX
 #define CYL__RSQRT(x) CYL_SQRTF(x)
@@ -351,7 +349,7 @@ typedef struct CYL__N(hit) { CYL__R t, t_err, n[3], v; int part; unsigned flags;
 typedef struct CYL__P(frame) {
     CYL__L w[3], wl[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, tlim, vlim, lo, hi;
     CYL__L s[3], m[3], aa, ad, mm, aww, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha;
-    int et, ev, exact, cold; /* cold: the exact path's frame (FMA products, unscaled output) */
+    int et, ev, exact, cold, par; /* cold: the exact path's (FMA products, unscaled output) */
 } CYL__P(frame);
 
 /* One crossing of the ray with the surface; h: ∓√(|a|²D) at a wall (entry −, exit +). */
@@ -447,9 +445,9 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f);
 CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f);
 CYL__INL int CYL__P(steep)(const CYL__P(frame) *f);
 
-/* The hot path: the frame from the inputs as given, one range test on derived values, and the
-   answer; whatever the test refuses (invalid input, out of range, parallel, an unknown option)
-   goes to the exact path. want: 0 occluded, 1 nearest, 2 all. */
+/* The hot path: the frame, one range test, the answer; what the test refuses (invalid, out of
+   range, near the axis direction, an unknown option) goes to the exact path. want: 0 occluded,
+   1 nearest, 2 all. */
 CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                          int want, CYL__N(hit) *hits)
 {
@@ -462,7 +460,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.tmin = f.rmin = CYL__P(in)(ray->tmin), f.tmax = f.rmax = CYL__P(in)(ray->tmax);
     f.tlim = (CYL__L)CYL__RMAX, f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX);
     f.lo = CYL__HOT_LO, f.hi = CYL__HOT_HI;
-    f.et = f.ev = f.cold = 0, f.exact = 1;
+    f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
     if ((CYL__P(derive)(&f) == 0) | CYL__P(steep)(&f) | ((opts & ~CYL__SUPPORTED) != 0u))
         return CYL__P(cold)(ray, cyl, opts, want, hits);
     return CYL__P(answer)(&f, opts, want, hits);
@@ -534,9 +532,8 @@ CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f)
     return f->A <= p2 * f->ad;
 }
 
-/* The rays the exact path answers: parallel ones and, unless the inputs' products are exact in
-   L (float in double), those whose plain s = a × d or m = a × w loses more than 8 bits (N6): d
-   or o − c within 2^-8 of the axis direction. */
+/* Rays for the exact path: parallel ones and, unless L makes the inputs' products exact, those
+   whose plain s or m loses over 8 bits (N6): d or o − c within 2^-8 of the axis direction. */
 CYL__INL int CYL__P(steep)(const CYL__P(frame) *f)
 {
     if (sizeof(CYL__L) > sizeof(CYL__R)) return CYL__P(parallel)(f);
@@ -552,9 +549,8 @@ CYL__INL int CYL__P(classify_wall)(const CYL__P(frame) *f)
     return f->D >= -band ? 1 : 0;
 }
 
-/* The two wall roots in t order from the stable pair q = −(B + sgn(B)√(|a|²D)), q/A and C/q
-   (N4); a contact in the band without a real root (D <= 0) is the point of closest approach,
-   twice. Returns √(|a|²D). */
+/* The wall roots in t order from the stable pair (N4); a contact in the band without a real
+   root (D <= 0) is the point of closest approach, twice. Returns √(|a|²D). */
 CYL__INL CYL__L CYL__P(wall_roots)(const CYL__P(frame) *f, CYL__L t[2])
 {
     CYL__L sq = CYL__LSQRT(f->aa * CYL__P(max)(f->D, 0)), q;
@@ -585,10 +581,9 @@ CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t)
     return !(t < f->tmin) && !(t > f->tmax) && rep;
 }
 
-/* Crossing k (0 entry, 1 exit) of the wall roots t with the slab s (N4): the open tube keeps a
-   wall crossing inside the slab; the capped solid clips the wall interval with the slab, so
-   that entry and exit are each the wall or a cap (watertight at the rim; a rim point is the
-   wall). ok: it exists and lies in the t range. */
+/* Crossing k (0 entry, 1 exit) of the wall roots t and the slab s (N4): the open tube keeps a
+   wall crossing inside the slab; the capped solid clips the wall interval with the slab (entry
+   and exit the wall or a cap; a rim point is the wall). ok: it exists, in the t range. */
 CYL__INL CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, int k,
                                         const CYL__L t[2], const CYL__L s[2], CYL__L sq,
                                         unsigned tan)
@@ -606,17 +601,21 @@ CYL__INL CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, i
         x.flags &= ~CYL_F_TANGENT;
         x.ok = 1;
     }
+    if (f->par) { /* a parallel ray's cap crossing counts where its point is inside the disk */
+        CYL__L y[3];
+        CYL__P(lin)(1, f->m, x.t, f->s, y);
+        x.ok = x.ok && x.part != CYL_SIDE && CYL__P(dot)(y, y) <= f->r2aa;
+        x.flags |= CYL_F_PARALLEL;
+    }
     x.ok = x.ok && CYL__P(in_range)(f, x.t);
     return x;
 }
 
 /* ------------------------------------------------------------------ output and bound */
 
-/* t_err of a wall crossing (N5): the residual F = |y|² − r²|a|² and G = y·s (half the slope) at
-   t, y = m + t·s, with bounds EF, EG on their rounding (standard model, 2-norms: a cross
-   product's componentwise error sums to at most γ2·√6·|x||z|); the root of the same crossing
-   is within (|F| + EF)/(|G| − EG) where that is the quadratic's near branch, else within the
-   product-of-roots bound. */
+/* t_err of a wall crossing (N5): the residual F = |y|² − r²|a|² and G = y·s at t, y = m + t·s,
+   with bounds EF, EG on their rounding; the root of the same crossing is within (|F| + EF)/
+   (|G| − EG) on the quadratic's near branch, else within the product-of-roots bound. */
 CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x)
 {
     const CYL__L u = CYL__LU, ns = CYL__LSQRT(f->A), Es = 5 * u * CYL__LSQRT(f->ad);
@@ -680,9 +679,8 @@ CYL__INL CYL__L CYL__P(axial_v)(const CYL__P(frame) *f, CYL__L t)
     return CYL__P(max)(-f->H, CYL__P(min)(v, f->H));
 }
 
-/* The hit in the caller's units and type: t, t_err and v unscaled (the exact path's frames), t
-   kept in the caller's range, t_err widened by t's own rounding into R and rounded up, v kept
-   within h/2 after its rounding into R. */
+/* The hit in the caller's units and type: t, t_err, v unscaled (exact path), t kept in range,
+   t_err widened by t's rounding into R and rounded up, v within h/2 after its rounding. */
 CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts,
                            CYL__N(hit) *hit)
 {
@@ -717,11 +715,12 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsig
 /* The crossings in t order, each emitted as found; occluded and intersect stop at the first. */
 CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits)
 {
-    CYL__L t[2], s[2], sq;
+    CYL__L t[2], s[2], sq = 0;
     CYL__P(cross) x;
-    int kind = CYL__P(classify_wall)(f), n = 0, k;
+    int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0, k;
     if (kind == 0 || (kind == 1 && (opts & CYL_NO_TANGENT))) return 0;
-    sq = CYL__P(wall_roots)(f, t);
+    if (f->par) t[0] = -CYL__LINF, t[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
+    else sq = CYL__P(wall_roots)(f, t);
     CYL__P(slab)(f, s);
     for (k = 0; k < 2; k++) {
         x = CYL__P(crossing)(f, opts, k, t, s, sq, kind == 1 ? CYL_F_TANGENT : 0u);
@@ -758,9 +757,8 @@ CYL__INL CYL__R CYL__P(amax3)(const CYL__R x[3])
     return m > y ? (m > z ? m : z) : (y > z ? y : z);
 }
 
-/* The frame of valid input at a scale where the hot path's arithmetic neither overflows nor
-   underflows (N1): lengths by 2^-kl, d by 2^-kd, a by 2^-ka (exact); o − c formed at the scale
-   of o and c first, so that it cannot overflow. */
+/* The frame of valid input scaled into the range (N2): lengths by 2^-kl, d by 2^-kd, a by
+   2^-ka (exact); o − c formed at o's and c's scale first (no overflow), exactly as a pair. */
 static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
                                        const CYL__N(cylinder) *cyl)
 {
@@ -794,34 +792,8 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     f->cold = f->exact = 1;
 }
 
-/* A ray parallel to the axis (N7): no wall; with caps, each cap crossing where the ray point
-   lies inside its disk. */
-static inline int CYL__P(answer_parallel)(const CYL__P(frame) *f, unsigned opts, int want,
-                                          CYL__N(hit) *hits)
-{
-    CYL__L s[2], y[3];
-    CYL__P(cross) x;
-    int n = 0, k, i;
-    if (!(opts & CYL_CAPS)) return 0;
-    CYL__P(slab)(f, s);
-    for (k = 0; k < 2; k++) {
-        for (i = 0; i < 3; i++) y[i] = f->m[i] + s[k] * f->s[i];
-        if (!(CYL__P(dot)(y, y) <= f->r2aa) || !CYL__P(in_range)(f, s[k])) continue;
-        if (want == 0) return 1;
-        x.t = s[k];
-        x.h = 0;
-        x.part = (k == 0) == !(f->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH;
-        x.ok = 1;
-        x.flags = CYL_F_PARALLEL | (k ? CYL_F_INSIDE : 0u);
-        CYL__P(emit)(f, &x, opts, &hits[n++]);
-        if (want == 1) break;
-    }
-    return n;
-}
-
-/* The exact path: everything the hot path's range test refused. Validates, scales, and answers
-   on the same decisions; a scene whose ratios stay outside the range even scaled (a radius
-   below 2^-300 of |o − c| in double) is answered with r raised to that limit and t_err = inf. */
+/* The exact path: validates, scales, answers on the same decisions; ratios out of range even
+   scaled (r below 2^-300 |o − c|, double) are answered with r raised to it and t_err = inf. */
 CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                            int want, CYL__N(hit) *hits)
 {
@@ -835,7 +807,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         f.exact = 0;
         if (!CYL__P(derive)(&f)) return CYL_MISS;
     }
-    if (CYL__P(parallel)(&f)) return CYL__P(answer_parallel)(&f, opts, want, hits);
+    f.par = CYL__P(parallel)(&f);
     return CYL__P(answer)(&f, opts, want, hits);
 }
 
