@@ -509,13 +509,14 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     f->r2aa = f->r2 * f->aa;
     f->mm = CYL__P(dot)(f->m, f->m);
     f->C = f->mm - f->r2aa;
-    /* P = w·s = −m·d: the exact path's m is accurate (N1) and −m·d then has no error of |w| */
-    f->P = f->cold ? -CYL__P(dot)(f->m, f->d) : CYL__P(dot)(f->w, f->s);
-    f->D = f->r2 * f->A - f->P * f->P; /* B² − AC = |a|²D (N3) */
+    f->P = CYL__P(dot)(f->w, f->s);
     f->z0 = CYL__P(dot)(f->a, f->w);
     f->zeta = CYL__P(dot)(f->a, f->d);
     f->ad = f->A + f->zeta * f->zeta; /* |a|²|d|² */
     f->aww = f->mm + f->z0 * f->z0;   /* |a|²|w|² */
+    /* P = w·s = −m·d: with its accurate s and m the exact path takes the one of smaller error */
+    if (f->cold && f->aww * f->A > f->mm * f->ad) f->P = -CYL__P(dot)(f->m, f->d);
+    f->D = f->r2 * f->A - f->P * f->P; /* B² − AC = |a|²D (N3) */
     f->sqaa = CYL__LSQRT(f->aa);
     f->Ha = f->H * f->sqaa;
     L2 = (f->aww + f->r2aa) * f->ad; /* |a|²|d|²·|a|²(|w|² + r²), about |a|²D */
@@ -752,10 +753,7 @@ static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder
 }
 
 CYL__INL CYL__R CYL__P(amax3)(const CYL__R x[3])
-{
-    CYL__R m = x[0] < 0 ? -x[0] : x[0], y = x[1] < 0 ? -x[1] : x[1], z = x[2] < 0 ? -x[2] : x[2];
-    return m > y ? (m > z ? m : z) : (y > z ? y : z);
-}
+{ return (CYL__R)CYL__P(max)(CYL__P(max)(CYL__P(abs)(x[0]), CYL__P(abs)(x[1])), CYL__P(abs)(x[2])); }
 
 /* The frame of valid input scaled into the range (N2): lengths by 2^-kl, d by 2^-kd, a by
    2^-ka (exact); o − c formed at o's and c's scale first (no overflow), exactly as a pair. */
