@@ -756,13 +756,14 @@ CYL__INL CYL__R CYL__P(amax3)(const CYL__R x[3])
 { return (CYL__R)CYL__P(max)(CYL__P(max)(CYL__P(abs)(x[0]), CYL__P(abs)(x[1])), CYL__P(abs)(x[2])); }
 
 /* The frame of valid input scaled into the range (N2): lengths by 2^-kl, d by 2^-kd, a by
-   2^-ka (exact); o − c formed at o's and c's scale first (no overflow), exactly as a pair. */
+   2^-ka (exact); o − c exactly as a pair, from halved o and c where it would overflow. */
 static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
                                        const CYL__N(cylinder) *cyl)
 {
-    CYL__R oc = CYL__P(amax3)(ray->o), cc = CYL__P(amax3)(cyl->c), m0 = oc > cc ? oc : cc;
     CYL__L wr[3], m;
-    int j = CYL__P(expo)(m0 > cyl->r ? m0 : cyl->r), kl, kd, ka, i;
+    int j = 0, kl, kd, ka, i;
+    for (i = 0; i < 3; i++) /* halved (exact) only where o − c overflows: small parts stay */
+        if (!(CYL__P(abs)((CYL__L)ray->o[i] - (CYL__L)cyl->c[i]) <= CYL__LMAX)) j = 1;
     for (i = 0; i < 3; i++) { /* o − c = wr + f->wl exactly (TwoSum; Knuth) */
         CYL__L x = CYL__LT(scale)((CYL__L)ray->o[i], -j), y = -CYL__LT(scale)((CYL__L)cyl->c[i], -j);
         CYL__L z = (wr[i] = x + y) - x;
