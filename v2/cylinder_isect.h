@@ -378,11 +378,7 @@ CYL__INL void CYL__P(lin)(CYL__L p, const CYL__L x[3], CYL__L q, const CYL__L y[
     z[2] = x[2] * p + y[2] * q;
 }
 CYL__INL void CYL__P(mul3)(CYL__L p, const CYL__L x[3], CYL__L z[3])
-{
-    z[0] = x[0] * p;
-    z[1] = x[1] * p;
-    z[2] = x[2] * p;
-}
+{ z[0] = x[0] * p, z[1] = x[1] * p, z[2] = x[2] * p; }
 /* x·2^k for any k, in steps of normal powers of two: only the last step can round. */
 static inline CYL__R CYL__P(scale)(CYL__R x, int k)
 {
@@ -493,6 +489,7 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
     CYL__L ml[3], L2;
+    int ok;
     if (f->cold) { /* w = w + wl exactly there */
         CYL__P(cross_exact)(f->a, f->d, f->s);
         CYL__P(cross_exact)(f->a, f->w, f->m);
@@ -520,9 +517,9 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     f->sqaa = CYL__LSQRT(f->aa);
     f->Ha = f->H * f->sqaa;
     L2 = (f->aww + f->r2aa) * f->ad; /* |a|²|d|²·|a|²(|w|² + r²), about |a|²D */
-    return (CYL__P(min)(CYL__P(min)(f->r2aa, f->ad), f->Ha) >= f->lo) & (f->r > 0) &
-           (CYL__P(max)(L2, f->aww + f->r2aa) <= f->hi) & (L2 <= f->hi * f->aa) &
-           ((f->Ha <= CYL__LMAX) | (f->H > CYL__LMAX)) & (f->tmin <= f->tmax);
+    ok = CYL__P(min)(CYL__P(min)(f->r2aa, f->ad), f->Ha) >= f->lo;
+    ok &= (f->r > 0) & (CYL__P(max)(L2, f->aww + f->r2aa) <= f->hi) & (L2 <= f->hi * f->aa);
+    return ok & ((f->Ha <= CYL__LMAX) | (f->H > CYL__LMAX)) & (f->tmin <= f->tmax);
 }
 
 /* ------------------------------------------------------------------ decisions */
@@ -753,7 +750,10 @@ static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder
 }
 
 CYL__INL CYL__R CYL__P(amax3)(const CYL__R x[3])
-{ return (CYL__R)CYL__P(max)(CYL__P(max)(CYL__P(abs)(x[0]), CYL__P(abs)(x[1])), CYL__P(abs)(x[2])); }
+{
+    CYL__L m = CYL__P(max)(CYL__P(abs)((CYL__L)x[0]), CYL__P(abs)((CYL__L)x[1]));
+    return (CYL__R)CYL__P(max)(m, CYL__P(abs)((CYL__L)x[2]));
+}
 
 /* The frame of valid input scaled into the range (N2): lengths by 2^-kl, d by 2^-kd, a by
    2^-ka (exact); o − c exactly as a pair, from halved o and c where it would overflow. */
