@@ -347,7 +347,7 @@ typedef struct CYL__N(hit) { CYL__R t, t_err, n[3], v; int part; unsigned flags;
 /* The frame (N1): the inputs in L, scaled on the exact path (t, v there 2^et, 2^ev times the
    frame's), and everything derived from them once. */
 typedef struct CYL__P(frame) {
-    CYL__L w[3], wl[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, tlim, vlim, lo, hi;
+    CYL__L w[3], wl[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, tlim, vlim, lo;
     CYL__L s[3], m[3], aa, ad, mm, aww, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha;
     int et, ev, exact, cold, par; /* cold: the exact path's (FMA products, unscaled output) */
 } CYL__P(frame);
@@ -379,6 +379,8 @@ CYL__INL void CYL__P(lin)(CYL__L p, const CYL__L x[3], CYL__L q, const CYL__L y[
 }
 CYL__INL void CYL__P(mul3)(CYL__L p, const CYL__L x[3], CYL__L z[3])
 { z[0] = x[0] * p, z[1] = x[1] * p, z[2] = x[2] * p; }
+CYL__INL CYL__L CYL__P(amax)(const CYL__L x[3])
+{ return CYL__P(max)(CYL__P(max)(CYL__P(abs)(x[0]), CYL__P(abs)(x[1])), CYL__P(abs)(x[2])); }
 /* x·2^k for any k, in steps of normal powers of two: only the last step can round. */
 static inline CYL__R CYL__P(scale)(CYL__R x, int k)
 {
@@ -455,7 +457,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.r = CYL__P(in)(cyl->r), f.H = CYL__P(in)(cyl->h) * CYL__K(0.5);
     f.tmin = f.rmin = CYL__P(in)(ray->tmin), f.tmax = f.rmax = CYL__P(in)(ray->tmax);
     f.tlim = (CYL__L)CYL__RMAX, f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX);
-    f.lo = CYL__HOT_LO, f.hi = CYL__HOT_HI;
+    f.lo = CYL__HOT_LO;
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
     if ((CYL__P(derive)(&f) == 0) | CYL__P(steep)(&f) | ((opts & ~CYL__SUPPORTED) != 0u))
         return CYL__P(cold)(ray, cyl, opts, want, hits);
@@ -518,7 +520,7 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     f->Ha = f->H * f->sqaa;
     L2 = (f->aww + f->r2aa) * f->ad; /* |a|²|d|²·|a|²(|w|² + r²), about |a|²D */
     ok = CYL__P(min)(CYL__P(min)(f->r2aa, f->ad), f->Ha) >= f->lo;
-    ok &= (f->r > 0) & (CYL__P(max)(L2, f->aww + f->r2aa) <= f->hi) & (L2 <= f->hi * f->aa);
+    ok &= (f->r > 0) & (CYL__P(max)(L2, f->aww + f->r2aa) <= CYL__HOT_HI) & (L2 <= CYL__HOT_HI * f->aa);
     return ok & ((f->Ha <= CYL__LMAX) | (f->H > CYL__LMAX)) & (f->tmin <= f->tmax);
 }
 
@@ -655,8 +657,7 @@ CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, uns
         CYL__P(lin)(g, f->s, -x->h, as, n);
         len = CYL__P(dot)(n, n);
         if (!(len >= CYL__LTINY * CYL__K(4503599627370496.0) && len <= CYL__LMAX * CYL__LU)) {
-            int e = CYL__LT(expo)(CYL__P(max)(CYL__P(max)(CYL__P(abs)(n[0]), CYL__P(abs)(n[1])),
-                                              CYL__P(abs)(n[2]))); /* |n|² out of the range */
+            int e = CYL__LT(expo)(CYL__P(amax)(n)); /* |n|² out of the range */
             n[0] = CYL__LT(scale)(n[0], -e), n[1] = CYL__LT(scale)(n[1], -e);
             n[2] = CYL__LT(scale)(n[2], -e), len = CYL__P(dot)(n, n);
         }
@@ -749,12 +750,6 @@ static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder
     return 0;
 }
 
-CYL__INL CYL__R CYL__P(amax3)(const CYL__R x[3])
-{
-    CYL__L m = CYL__P(max)(CYL__P(abs)((CYL__L)x[0]), CYL__P(abs)((CYL__L)x[1]));
-    return (CYL__R)CYL__P(max)(m, CYL__P(abs)((CYL__L)x[2]));
-}
-
 /* The frame of valid input scaled into the range (N2): lengths by 2^-kl, d by 2^-kd, a by
    2^-ka (exact); o − c exactly as a pair, from halved o and c where it would overflow. */
 static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
@@ -769,15 +764,13 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
         CYL__L z = (wr[i] = x + y) - x;
         f->wl[i] = (x - (wr[i] - z)) + (y - z);
     }
-    m = CYL__P(max)(CYL__P(max)(CYL__P(abs)(wr[0]), CYL__P(abs)(wr[1])), CYL__P(abs)(wr[2]));
-    m = CYL__P(max)(m, CYL__LT(scale)((CYL__L)cyl->r, -j));
+    for (i = 0; i < 3; i++) f->d[i] = (CYL__L)ray->d[i], f->a[i] = (CYL__L)cyl->a[i];
+    m = CYL__P(max)(CYL__P(amax)(wr), CYL__LT(scale)((CYL__L)cyl->r, -j));
     kl = (m > 0 ? CYL__LT(expo)(m) : 0) + j;
-    kd = CYL__P(expo)(CYL__P(amax3)(ray->d));
-    ka = CYL__P(expo)(CYL__P(amax3)(cyl->a));
+    kd = CYL__LT(expo)(CYL__P(amax)(f->d)), ka = CYL__LT(expo)(CYL__P(amax)(f->a));
     for (i = 0; i < 3; i++) {
         f->w[i] = CYL__LT(scale)(wr[i], j - kl), f->wl[i] = CYL__LT(scale)(f->wl[i], j - kl);
-        f->d[i] = CYL__LT(scale)((CYL__L)ray->d[i], -kd);
-        f->a[i] = CYL__LT(scale)((CYL__L)cyl->a[i], -ka);
+        f->d[i] = CYL__LT(scale)(f->d[i], -kd), f->a[i] = CYL__LT(scale)(f->a[i], -ka);
     }
     f->r = CYL__LT(scale)((CYL__L)cyl->r, -kl), f->H = CYL__LT(scale)((CYL__L)cyl->h, -kl - 1);
     f->et = kl - kd, f->ev = kl;
@@ -787,7 +780,7 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     f->vlim = CYL__P(min)((CYL__L)cyl->h * CYL__K(0.5), (CYL__L)CYL__RMAX);
     if (sizeof(CYL__L) == sizeof(CYL__R) && f->vlim * 2 > (CYL__L)cyl->h) /* h/2 rounded up */
         f->vlim = (CYL__L)CYL__P(toward0)((CYL__R)f->vlim);
-    f->lo = CYL__COLD_LO, f->hi = CYL__HOT_HI;
+    f->lo = CYL__COLD_LO;
     f->cold = f->exact = 1;
 }
 
@@ -816,13 +809,15 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 {
     CYL__N(cylinder) cy;
     CYL__R m, x[3];
+    CYL__L al[3];
     int i, k;
     for (i = 0; i < 3; i++) {
         cy.c[i] = p0 && p1 ? p0[i] * (CYL__R)0.5 + p1[i] * (CYL__R)0.5 : 0;
         cy.a[i] = p0 && p1 ? p1[i] - p0[i] : 0;
+        al[i] = (CYL__L)cy.a[i];
     }
     cy.r = r;
-    m = CYL__P(amax3)(cy.a);
+    m = (CYL__R)CYL__P(amax)(al); /* exact: one of the components */
     if (m > 0 && m <= CYL__RMAX) {
         k = CYL__P(expo)(m);
         for (i = 0; i < 3; i++) x[i] = CYL__P(scale)(cy.a[i], -k);
