@@ -223,13 +223,20 @@
 #define CYL_FMAF(a, b, c) CYL__B(fmaf)(a, b, c)
 #endif
 /* A float taken as it is: gcc 12's SLP vectorizer drops (double)(float) round trips that a
-   caller's conversions and the float API in double pair up (NUMERICS.md). */
+   caller's conversions and the float API in double pair up (NUMERICS.md). Inputs are read
+   through laundered pointers (no value of the caller's stores is forwarded), t through an
+   opaque register. */
 #if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))
 #define CYL__OPAQUE(x) __asm__("" : "+x"(x))
 #elif (defined(__GNUC__) || defined(__clang__)) && defined(__aarch64__)
 #define CYL__OPAQUE(x) __asm__("" : "+w"(x))
 #else
 #define CYL__OPAQUE(x) (void)0
+#endif
+#if defined(__GNUC__) || defined(__clang__)
+#define CYL__LAUNDER(p) __asm__("" : "+r"(p))
+#else
+#define CYL__LAUNDER(p) (void)0
 #endif
 #ifndef CYL_FMA
 #define CYL_FMA(a, b, c) CYL__B(fma)(a, b, c)
@@ -430,18 +437,14 @@ CYL__INL void CYL__P(cross_exact)(const CYL__L x[3], const CYL__L y[3], CYL__L z
     z[2] = CYL__P(dop)(x[0], y[1], x[1], y[0]);
 }
 
-/* An input in L: a float as the caller stored it (CYL__OPAQUE), for the float API in double. */
-CYL__INL CYL__L CYL__P(in)(CYL__R x)
-{
-    if (sizeof(CYL__L) > sizeof(CYL__R)) CYL__OPAQUE(x);
-    return (CYL__L)x;
-}
+/* An input in L. */
+CYL__INL CYL__L CYL__P(in)(CYL__R x) { return (CYL__L)x; }
 
 /* ------------------------------------------------------------------ entry points */
 CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits);
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f);
 CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f);
-CYL__INL int CYL__P(steep)(const CYL__P(frame) *f);
+CYL__INL CYL__L CYL__P(steep)(const CYL__P(frame) *f);
 
 /* The hot path: the frame, one range test, the answer; what the test refuses (invalid, out of
    range, near the axis direction, an unknown option) goes to the exact path. want: 0 occluded,
@@ -450,6 +453,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
                          int want, CYL__N(hit) *hits)
 {
     CYL__P(frame) f; /* filled without loops: gcc then keeps the frame in registers */
+    if (sizeof(CYL__L) > sizeof(CYL__R)) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); }
     f.w[0] = CYL__P(in)(ray->o[0]) - CYL__P(in)(cyl->c[0]), f.d[0] = CYL__P(in)(ray->d[0]);
     f.w[1] = CYL__P(in)(ray->o[1]) - CYL__P(in)(cyl->c[1]), f.d[1] = CYL__P(in)(ray->d[1]);
     f.w[2] = CYL__P(in)(ray->o[2]) - CYL__P(in)(cyl->c[2]), f.d[2] = CYL__P(in)(ray->d[2]);
@@ -459,7 +463,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.tlim = (CYL__L)CYL__RMAX, f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX);
     f.lo = CYL__HOT_LO;
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
-    if ((CYL__P(derive)(&f) == 0) | CYL__P(steep)(&f) | ((opts & ~CYL__SUPPORTED) != 0u))
+    if (!CYL__P(derive)(&f) || (opts & ~CYL__SUPPORTED) != 0u)
         return CYL__P(cold)(ray, cyl, opts, want, hits);
     return CYL__P(answer)(&f, opts, want, hits);
 }
@@ -486,12 +490,12 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 
 /* ------------------------------------------------------------------ frame */
 /* Everything the decisions use, from the cross products s = a × d and m = a × w (N1), and the
-   range test (N2) on derived values: |a|²|d|², r²|a|² and Ha at least lo; |a|²(|w|² + r²), D's
-   size and |a|²D's at most hi; every NaN, infinity or zero of the inputs fails it too. */
+   range test (N2) on derived values: r|a|, r²|a|², |a|²|d|², Ha and (hot path) the steep
+   margin at least lo; |a|²(|w|² + r²), its product with |a|²|d|² and D's size at most hi; Ha
+   finite unless h is; tmin <= tmax. Every NaN, infinity, zero or negative of the inputs fails. */
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
-    CYL__L ml[3], L2;
-    int ok;
+    CYL__L ml[3], S, L2, lo, hi;
     if (f->cold) { /* w = w + wl exactly there */
         CYL__P(cross_exact)(f->a, f->d, f->s);
         CYL__P(cross_exact)(f->a, f->w, f->m);
@@ -518,10 +522,12 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     f->D = f->r2 * f->A - f->P * f->P; /* B² − AC = |a|²D (N3) */
     f->sqaa = CYL__LSQRT(f->aa);
     f->Ha = f->H * f->sqaa;
-    L2 = (f->aww + f->r2aa) * f->ad; /* |a|²|d|²·|a|²(|w|² + r²), about |a|²D */
-    ok = CYL__P(min)(CYL__P(min)(f->r2aa, f->ad), f->Ha) >= f->lo;
-    ok &= (f->r > 0) & (CYL__P(max)(L2, f->aww + f->r2aa) <= CYL__HOT_HI) & (L2 <= CYL__HOT_HI * f->aa);
-    return ok & ((f->Ha <= CYL__LMAX) | (f->H > CYL__LMAX)) & (f->tmin <= f->tmax);
+    S = f->aww + f->r2aa, L2 = S * f->ad; /* L2 >= |a|²·|a|²D, L2/|a|² >= D */
+    /* min and max pass a NaN on only as their second operand: h's is Ha's, the others' S's */
+    lo = CYL__P(min)(CYL__P(min)(f->r * f->sqaa, f->r2aa), CYL__P(min)(f->ad, f->Ha));
+    if (!f->cold) lo = CYL__P(min)(CYL__P(steep)(f), lo);
+    hi = CYL__P(max)(CYL__P(max)(S, L2), L2 / f->aa);
+    return lo >= f->lo && hi <= CYL__HOT_HI && !(f->Ha - f->H > CYL__LMAX) && f->tmin <= f->tmax;
 }
 
 /* ------------------------------------------------------------------ decisions */
@@ -532,12 +538,14 @@ CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f)
     return f->A <= p2 * f->ad;
 }
 
-/* Rays for the exact path: parallel ones and, unless L makes the inputs' products exact, those
-   whose plain s or m loses over 8 bits (N6): d or o − c within 2^-8 of the axis direction. */
-CYL__INL int CYL__P(steep)(const CYL__P(frame) *f)
+/* Rays for the exact path, as a margin below lo: parallel ones and, unless L makes the inputs'
+   products exact, those whose plain s or m loses over 8 bits (N6): d or o − c within 2^-8 of
+   the axis direction. */
+CYL__INL CYL__L CYL__P(steep)(const CYL__P(frame) *f)
 {
-    if (sizeof(CYL__L) > sizeof(CYL__R)) return CYL__P(parallel)(f);
-    return (65536 * f->A < f->ad) | (65536 * f->mm < f->aww);
+    const CYL__L p2 = (CYL__L)CYL__PARA * (CYL__L)CYL__PARA;
+    if (sizeof(CYL__L) > sizeof(CYL__R)) return f->A / p2 - f->ad;
+    return CYL__P(min)(65536 * f->A - f->ad, 65536 * f->mm - f->aww);
 }
 
 /* The wall (N3, N6): 0 the ray line misses the infinite tube, 1 a tangent contact (e within the
@@ -716,19 +724,22 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
 {
     CYL__L t[2], s[2], sq = 0;
     CYL__P(cross) x;
-    int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0, k;
-    if (kind == 0 || (kind == 1 && (opts & CYL_NO_TANGENT))) return 0;
+    int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0;
+    unsigned tan = kind == 1 ? CYL_F_TANGENT : 0u;
+    if (kind == 0 || (tan && (opts & CYL_NO_TANGENT))) return 0;
     if (f->par) t[0] = -CYL__LINF, t[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
     else sq = CYL__P(wall_roots)(f, t);
     CYL__P(slab)(f, s);
-    for (k = 0; k < 2; k++) {
-        x = CYL__P(crossing)(f, opts, k, t, s, sq, kind == 1 ? CYL_F_TANGENT : 0u);
-        if (!x.ok) continue;
+    x = CYL__P(crossing)(f, opts, 0, t, s, sq, tan); /* entry, then exit: no loop, so that */
+    if (x.ok) {                                       /* k and the arrays fold away */
         if (want == 0) return 1;
         CYL__P(emit)(f, &x, opts, &hits[n++]);
-        if (want == 1) break;
+        if (want == 1) return 1;
     }
-    return n;
+    x = CYL__P(crossing)(f, opts, 1, t, s, sq, tan);
+    if (!x.ok) return n;
+    if (want != 0) CYL__P(emit)(f, &x, opts, &hits[n]);
+    return n + 1;
 }
 
 /* ------------------------------------------------------------------ the exact path */
