@@ -84,7 +84,8 @@
      CYL_NO_DOUBLE         undefined                    leave out cyld_*: no double anywhere
      CYL_DEF               static inline (forced, gcc   qualifier of every public function;
                            and clang unless -Os)        `static inline` lets calls share code
-     CYL_SQRTF, CYL_SQRT   __builtin_sqrt[f] or sqrt[f] square roots
+     CYL_SQRTF, CYL_SQRT   the instruction (x86-64,     square roots
+                           AArch64), sqrt[f] otherwise
      CYL_FMAF, CYL_FMA     __builtin_fma[f] or fma[f]   the exact path's fused multiply-add
      CYL_FLOAT_WIDE        1 where double is hardware   the float API computes in double (the
                            (x86-64, AArch64, ARM with   same body, another working type); 0: in
@@ -213,11 +214,27 @@
 #include <string.h>
 #define CYL__B(f) f
 #endif
+/* Square roots: the instruction itself on x86-64 and AArch64 (sqrt() adds a branch for errno
+   unless -fno-math-errno; the instruction is IEEE's correctly rounded root all the same). */
+#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__aarch64__))
+#if defined(__aarch64__)
+#define CYL__ROOT(x, f, g) __asm__("fsqrt %" g "0, %" g "0" : "+w"(x))
+#elif defined(__AVX__)
+#define CYL__ROOT(x, f, g) __asm__("vsqrt" f " %0, %0, %0" : "+x"(x))
+#else
+#define CYL__ROOT(x, f, g) __asm__("sqrt" f " %0, %0" : "+x"(x))
+#endif
+static inline float cyl__sqrtf(float x) { CYL__ROOT(x, "ss", "s"); return x; }
+static inline double cyl__sqrt(double x) { CYL__ROOT(x, "sd", "d"); return x; }
+#else
+#define cyl__sqrtf(x) CYL__B(sqrtf)(x)
+#define cyl__sqrt(x) CYL__B(sqrt)(x)
+#endif
 #ifndef CYL_SQRTF
-#define CYL_SQRTF(x) CYL__B(sqrtf)(x)
+#define CYL_SQRTF(x) cyl__sqrtf(x)
 #endif
 #ifndef CYL_SQRT
-#define CYL_SQRT(x) CYL__B(sqrt)(x)
+#define CYL_SQRT(x) cyl__sqrt(x)
 #endif
 #ifndef CYL_FMAF
 #define CYL_FMAF(a, b, c) CYL__B(fmaf)(a, b, c)
@@ -565,7 +582,7 @@ CYL__INL CYL__L CYL__P(wall_roots)(const CYL__P(frame) *f, CYL__L t[2])
     if (f->B < 0) q = sq - f->B, t[0] = f->C / q, t[1] = q / f->A; /* q² >= AC: in order */
     else q = -(f->B + sq), t[0] = q / f->A, t[1] = f->C / q;
     if (!(f->D > 0)) t[0] = t[1] = -f->B / f->A;
-    if (t[0] > t[1]) q = t[0], t[0] = t[1], t[1] = q; /* but for their rounding */
+    q = t[0], t[0] = CYL__P(min)(q, t[1]), t[1] = CYL__P(max)(q, t[1]); /* but for rounding */
     return sq;
 }
 
