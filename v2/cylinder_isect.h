@@ -205,25 +205,38 @@
 #define CYL_PARALLEL_TOL (1.0 / 9007199254740992.0)           /* 2^-53 */
 #endif
 
-/* Environment hooks: builtins where the compiler has them (no header; sqrt one instruction
-   with -fno-math-errno, fma with a hardware FMA), <math.h> otherwise. */
+/* Environment hooks: builtins where the compiler has them (no header; fma one instruction
+   with a hardware FMA), <math.h> otherwise. Square roots as the instruction on x86 and AArch64
+   (sqrt() adds an errno branch without -fno-math-errno). CYL__OPAQUE: a float taken as it is,
+   CYL__LAUNDER: a pointer whose target's stores are not forwarded; gcc 12's SLP vectorizer
+   drops (double)(float) round trips that a caller's conversions and ours pair up (NUMERICS). */
 #if defined(__GNUC__) || defined(__clang__)
 #define CYL__B(f) __builtin_##f
+#define CYL__LAUNDER(p) __asm__("" : "+r"(p))
+#if defined(__x86_64__) || defined(__i386__)
+#define CYL__OPAQUE(x) __asm__("" : "+x"(x))
+#endif
+#if defined(__x86_64__)
+#define CYL__ROOT(x, f, g) __asm__(CYL__VEX("v") "sqrt" f " %0, " CYL__VEX("%0, ") "%0" : "+x"(x))
+#elif defined(__aarch64__)
+#define CYL__OPAQUE(x) __asm__("" : "+w"(x))
+#define CYL__ROOT(x, f, g) __asm__("fsqrt %" g "0, %" g "0" : "+w"(x))
+#endif
 #else
 #include <math.h>
 #include <string.h>
 #define CYL__B(f) f
+#define CYL__LAUNDER(p) (void)0
 #endif
-/* Square roots: the instruction itself on x86-64 and AArch64 (sqrt() adds a branch for errno
-   unless -fno-math-errno; the instruction is IEEE's correctly rounded root all the same). */
-#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__aarch64__))
-#if defined(__aarch64__)
-#define CYL__ROOT(x, f, g) __asm__("fsqrt %" g "0, %" g "0" : "+w"(x))
-#elif defined(__AVX__)
-#define CYL__ROOT(x, f, g) __asm__("vsqrt" f " %0, %0, %0" : "+x"(x))
+#ifndef CYL__OPAQUE
+#define CYL__OPAQUE(x) (void)0
+#endif
+#if defined(__AVX__) /* the VEX form: no SSE/AVX transition */
+#define CYL__VEX(x) x
 #else
-#define CYL__ROOT(x, f, g) __asm__("sqrt" f " %0, %0" : "+x"(x))
+#define CYL__VEX(x)
 #endif
+#ifdef CYL__ROOT
 static inline float cyl__sqrtf(float x) { CYL__ROOT(x, "ss", "s"); return x; }
 static inline double cyl__sqrt(double x) { CYL__ROOT(x, "sd", "d"); return x; }
 #else
@@ -238,22 +251,6 @@ static inline double cyl__sqrt(double x) { CYL__ROOT(x, "sd", "d"); return x; }
 #endif
 #ifndef CYL_FMAF
 #define CYL_FMAF(a, b, c) CYL__B(fmaf)(a, b, c)
-#endif
-/* A float taken as it is: gcc 12's SLP vectorizer drops (double)(float) round trips that a
-   caller's conversions and the float API in double pair up (NUMERICS.md). Inputs are read
-   through laundered pointers (no value of the caller's stores is forwarded), t through an
-   opaque register. */
-#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))
-#define CYL__OPAQUE(x) __asm__("" : "+x"(x))
-#elif (defined(__GNUC__) || defined(__clang__)) && defined(__aarch64__)
-#define CYL__OPAQUE(x) __asm__("" : "+w"(x))
-#else
-#define CYL__OPAQUE(x) (void)0
-#endif
-#if defined(__GNUC__) || defined(__clang__)
-#define CYL__LAUNDER(p) __asm__("" : "+r"(p))
-#else
-#define CYL__LAUNDER(p) (void)0
 #endif
 #ifndef CYL_FMA
 #define CYL_FMA(a, b, c) CYL__B(fma)(a, b, c)
@@ -454,13 +451,9 @@ CYL__INL void CYL__P(cross_exact)(const CYL__L x[3], const CYL__L y[3], CYL__L z
     z[2] = CYL__P(dop)(x[0], y[1], x[1], y[0]);
 }
 
-/* An input in L. */
-CYL__INL CYL__L CYL__P(in)(CYL__R x) { return (CYL__L)x; }
-
 /* ------------------------------------------------------------------ entry points */
 CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits);
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f);
-CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f);
 CYL__INL CYL__L CYL__P(steep)(const CYL__P(frame) *f);
 
 /* The hot path: the frame, one range test, the answer; what the test refuses (invalid, out of
@@ -471,14 +464,13 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
 {
     CYL__P(frame) f; /* filled without loops: gcc then keeps the frame in registers */
     if (sizeof(CYL__L) > sizeof(CYL__R)) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); }
-    f.w[0] = CYL__P(in)(ray->o[0]) - CYL__P(in)(cyl->c[0]), f.d[0] = CYL__P(in)(ray->d[0]);
-    f.w[1] = CYL__P(in)(ray->o[1]) - CYL__P(in)(cyl->c[1]), f.d[1] = CYL__P(in)(ray->d[1]);
-    f.w[2] = CYL__P(in)(ray->o[2]) - CYL__P(in)(cyl->c[2]), f.d[2] = CYL__P(in)(ray->d[2]);
-    f.a[0] = CYL__P(in)(cyl->a[0]), f.a[1] = CYL__P(in)(cyl->a[1]), f.a[2] = CYL__P(in)(cyl->a[2]);
-    f.r = CYL__P(in)(cyl->r), f.H = CYL__P(in)(cyl->h) * CYL__K(0.5);
-    f.tmin = f.rmin = CYL__P(in)(ray->tmin), f.tmax = f.rmax = CYL__P(in)(ray->tmax);
-    f.tlim = (CYL__L)CYL__RMAX, f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX);
-    f.lo = CYL__HOT_LO;
+    f.w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0], f.d[0] = (CYL__L)ray->d[0];
+    f.w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1], f.d[1] = (CYL__L)ray->d[1];
+    f.w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2], f.d[2] = (CYL__L)ray->d[2];
+    f.a[0] = (CYL__L)cyl->a[0], f.a[1] = (CYL__L)cyl->a[1], f.a[2] = (CYL__L)cyl->a[2];
+    f.r = (CYL__L)cyl->r, f.H = (CYL__L)cyl->h * CYL__K(0.5);
+    f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
+    f.tlim = (CYL__L)CYL__RMAX, f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX), f.lo = CYL__HOT_LO;
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
     if (!CYL__P(derive)(&f) || (opts & ~CYL__SUPPORTED) != 0u)
         return CYL__P(cold)(ray, cyl, opts, want, hits);
@@ -487,23 +479,14 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
 
 CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                               unsigned opts, CYL__N(hit) *hit)
-{
-    if (!ray || !cyl || !hit) return CYL_E_NULL;
-    return CYL__P(run)(ray, cyl, opts, 1, hit);
-}
+{ return !ray || !cyl || !hit ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 1, hit); }
 
 CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                                   unsigned opts, CYL__N(hit) hits[2])
-{
-    if (!ray || !cyl || !hits) return CYL_E_NULL;
-    return CYL__P(run)(ray, cyl, opts, 2, hits);
-}
+{ return !ray || !cyl || !hits ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 2, hits); }
 
 CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
-{
-    if (!ray || !cyl) return CYL_E_NULL;
-    return CYL__P(run)(ray, cyl, opts, 0, (CYL__N(hit) *)0);
-}
+{ return !ray || !cyl ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 0, (CYL__N(hit) *)0); }
 
 /* ------------------------------------------------------------------ frame */
 /* Everything the decisions use, from the cross products s = a × d and m = a × w (N1), and the
@@ -578,10 +561,11 @@ CYL__INL int CYL__P(classify_wall)(const CYL__P(frame) *f)
    root (D <= 0) is the point of closest approach, twice. Returns √(|a|²D). */
 CYL__INL CYL__L CYL__P(wall_roots)(const CYL__P(frame) *f, CYL__L t[2])
 {
-    CYL__L sq = CYL__LSQRT(f->aa * CYL__P(max)(f->D, 0)), q;
+    CYL__L sq = 0, q;
+    if (!(f->D > 0)) return t[0] = t[1] = -f->B / f->A, sq;
+    sq = CYL__LSQRT(f->aa * f->D);
     if (f->B < 0) q = sq - f->B, t[0] = f->C / q, t[1] = q / f->A; /* q² >= AC: in order */
     else q = -(f->B + sq), t[0] = q / f->A, t[1] = f->C / q;
-    if (!(f->D > 0)) t[0] = t[1] = -f->B / f->A;
     q = t[0], t[0] = CYL__P(min)(q, t[1]), t[1] = CYL__P(max)(q, t[1]); /* but for rounding */
     return sq;
 }
@@ -592,8 +576,7 @@ CYL__INL CYL__L CYL__P(wall_roots)(const CYL__P(frame) *f, CYL__L t[2])
 CYL__INL void CYL__P(slab)(const CYL__P(frame) *f, CYL__L s[2])
 {
     CYL__L p0 = (-f->Ha - f->z0) / f->zeta, p1 = (f->Ha - f->z0) / f->zeta;
-    s[0] = CYL__P(min)(p0, p1);
-    s[1] = CYL__P(max)(p0, p1);
+    s[0] = CYL__P(min)(p0, p1), s[1] = CYL__P(max)(p0, p1);
 }
 
 /* The rim: is t inside the slab, ends included? */
@@ -614,17 +597,12 @@ CYL__INL CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, i
                                         unsigned tan)
 {
     CYL__P(cross) x;
-    x.t = t[k];
-    x.h = k ? sq : -sq;
-    x.part = CYL_SIDE;
-    x.flags = (k ? CYL_F_INSIDE : 0u) | tan;
+    x.t = t[k], x.h = k ? sq : -sq, x.part = CYL_SIDE, x.flags = (k ? CYL_F_INSIDE : 0u) | tan;
     x.ok = CYL__P(in_slab)(x.t, s);
     if (!x.ok && (opts & CYL_CAPS) &&
         (k ? t[1] > s[1] && !(s[1] < t[0]) : t[0] < s[0] && !(s[0] > t[1]))) {
-        x.t = s[k];
+        x.t = s[k], x.ok = 1, x.flags &= ~CYL_F_TANGENT;
         x.part = (k == 0) == !(f->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH;
-        x.flags &= ~CYL_F_TANGENT;
-        x.ok = 1;
     }
     if (f->par) { /* a parallel ray's cap crossing counts where its point is inside the disk */
         CYL__L y[3];
@@ -637,7 +615,6 @@ CYL__INL CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, i
 }
 
 /* ------------------------------------------------------------------ output and bound */
-
 /* t_err of a wall crossing (N5): the residual F = |y|² − r²|a|² and G = y·s at t, y = m + t·s,
    with bounds EF, EG on their rounding; the root of the same crossing is within (|F| + EF)/
    (|G| − EG) on the quadratic's near branch, else within the product-of-roots bound. */
@@ -720,8 +697,7 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsig
         err = f->exact ? CYL__LT(scale)(err, f->et) + CYL__LTINY + CYL__P(abs)(t - t0) : CYL__LINF;
         v = CYL__P(max)(-f->vlim, CYL__P(min)(CYL__LT(scale)(v, f->ev), f->vlim));
     }
-    tr = (CYL__R)t;
-    vr = (CYL__R)v;
+    tr = (CYL__R)t, vr = (CYL__R)v;
     if (sizeof(CYL__L) > sizeof(CYL__R)) {
         CYL__OPAQUE(tr);
         if (!(opts & CYL_NO_ERRBOUND)) { /* t rounded to R: its rounding joins the bound */
@@ -744,8 +720,8 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
     int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0;
     unsigned tan = kind == 1 ? CYL_F_TANGENT : 0u;
     if (kind == 0 || (tan && (opts & CYL_NO_TANGENT))) return 0;
-    if (f->par) t[0] = -CYL__LINF, t[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
-    else sq = CYL__P(wall_roots)(f, t);
+    if (!f->par) sq = CYL__P(wall_roots)(f, t);
+    else t[0] = -CYL__LINF, t[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
     CYL__P(slab)(f, s);
     x = CYL__P(crossing)(f, opts, 0, t, s, sq, tan); /* entry, then exit: no loop, so that */
     if (x.ok) {                                       /* k and the arrays fold away */
@@ -754,9 +730,8 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
         if (want == 1) return 1;
     }
     x = CYL__P(crossing)(f, opts, 1, t, s, sq, tan);
-    if (!x.ok) return n;
-    if (want != 0) CYL__P(emit)(f, &x, opts, &hits[n]);
-    return n + 1;
+    if (x.ok && want != 0) CYL__P(emit)(f, &x, opts, &hits[n]);
+    return n + x.ok;
 }
 
 /* ------------------------------------------------------------------ the exact path */
@@ -907,13 +882,13 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F| + EF)/(|G| −
        EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap: the plane's
        residual over |ζ| less its bound. The float API computed in double adds t's rounding.
-   N6. The plain tier's limits, all from rounding the quantities each decision compares: e =
-       D/(r²A) carries a few u·(1 + |o − c|/r)(1 + 2ρ/r) (ρ: the line's distance from the
-       axis), so the tangent band's edges blur by that for far origins; a rim, u·(|o − c| + |t d| + h)/h of the half height; the rim of a flat disk
-       seen along its axis from an origin on its wall, about u·r/(h·sin) of its margin; a t
-       range end, u·|t|; a cap crossing, the cancellation of z0 + Ha times u. A ray within
+   N6. The plain tier's limits, from rounding what each decision compares: e = D/(r²A) carries
+       a few u·(1 + |o − c|/r)(1 + 2ρ/r) (ρ: the line's distance from the axis): the tangent
+       band's edges blur by that for far origins; a rim, u·(|o − c| + |t d| + h)/h of the half
+       height (a flat disk seen along its axis from an origin on its wall: about u·r/(h·sin));
+       a t range end, u·|t|; a cap crossing, u times the cancellation of z0 ∓ Ha. A ray within
        2^-8 of the axis' direction would add u/sin to e (far origins: u·|w|/(r·sin)); the
-       double API sends those to the exact path, whose s is accurate.
+       double API sends those to the exact path, whose s and m are accurate.
    N7. Parallel: A <= τ²|a|²|d|² (sin <= τ = CYL_PARALLEL_TOL). Below sin = u a half-ulp change
        of one component of d makes the ray exactly parallel; yet a ray from the wall can cross
        it again a few dozen radii along, a crossing its inputs determine (a × d is exact for
