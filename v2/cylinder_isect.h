@@ -463,16 +463,18 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
                          int want, CYL__N(hit) *hits)
 {
     CYL__P(frame) f; /* filled without loops: gcc then keeps the frame in registers */
+    int ok;
     if (sizeof(CYL__L) > sizeof(CYL__R)) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); }
     f.w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0], f.d[0] = (CYL__L)ray->d[0];
     f.w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1], f.d[1] = (CYL__L)ray->d[1];
     f.w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2], f.d[2] = (CYL__L)ray->d[2];
     f.a[0] = (CYL__L)cyl->a[0], f.a[1] = (CYL__L)cyl->a[1], f.a[2] = (CYL__L)cyl->a[2];
     f.r = (CYL__L)cyl->r, f.H = (CYL__L)cyl->h * CYL__K(0.5);
-    f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
     f.tlim = (CYL__L)CYL__RMAX, f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX), f.lo = CYL__HOT_LO;
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
-    if (!CYL__P(derive)(&f) || (opts & ~CYL__SUPPORTED) != 0u)
+    ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
+    f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
+    if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u)
         return CYL__P(cold)(ray, cyl, opts, want, hits);
     return CYL__P(answer)(&f, opts, want, hits);
 }
@@ -492,7 +494,7 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 /* Everything the decisions use, from the cross products s = a × d and m = a × w (N1), and the
    range test (N2) on derived values: r|a|, r²|a|², |a|²|d|², Ha and (hot path) the steep
    margin at least lo; |a|²(|w|² + r²), its product with |a|²|d|² and D's size at most hi; Ha
-   finite unless h is; tmin <= tmax. Every NaN, infinity, zero or negative of the inputs fails. */
+   finite unless h is. Every NaN, infinity, zero or negative of o, d, c, a, r, h fails it. */
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
     CYL__L ml[3], S, L2, lo, hi;
@@ -503,20 +505,20 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
         CYL__P(lin)(1, f->m, 1, ml, f->m);
     } else {
         CYL__P(cross3)(f->a, f->d, f->s);
-        CYL__P(cross3)(f->a, f->w, f->m);
     }
-    f->aa = CYL__P(dot)(f->a, f->a);
+    f->zeta = CYL__P(dot)(f->a, f->d);
     f->A = CYL__P(dot)(f->s, f->s);
+    f->ad = f->A + f->zeta * f->zeta; /* |a|²|d|² */
+    if (!f->cold) CYL__P(cross3)(f->a, f->w, f->m); /* after s's dots: fewer values live */
+    f->z0 = CYL__P(dot)(f->a, f->w);
+    f->P = CYL__P(dot)(f->w, f->s);
+    f->mm = CYL__P(dot)(f->m, f->m);
+    f->aww = f->mm + f->z0 * f->z0;   /* |a|²|w|² */
     f->B = CYL__P(dot)(f->m, f->s);
+    f->aa = CYL__P(dot)(f->a, f->a);
     f->r2 = f->r * f->r;
     f->r2aa = f->r2 * f->aa;
-    f->mm = CYL__P(dot)(f->m, f->m);
     f->C = f->mm - f->r2aa;
-    f->P = CYL__P(dot)(f->w, f->s);
-    f->z0 = CYL__P(dot)(f->a, f->w);
-    f->zeta = CYL__P(dot)(f->a, f->d);
-    f->ad = f->A + f->zeta * f->zeta; /* |a|²|d|² */
-    f->aww = f->mm + f->z0 * f->z0;   /* |a|²|w|² */
     /* P = w·s = −m·d: with its accurate s and m the exact path takes the one of smaller error */
     if (f->cold && f->aww * f->A > f->mm * f->ad) f->P = -CYL__P(dot)(f->m, f->d);
     f->D = f->r2 * f->A - f->P * f->P; /* B² − AC = |a|²D (N3) */
@@ -527,7 +529,7 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     lo = CYL__P(min)(CYL__P(min)(f->r * f->sqaa, f->r2aa), CYL__P(min)(f->ad, f->Ha));
     if (!f->cold) lo = CYL__P(min)(CYL__P(steep)(f), lo);
     hi = CYL__P(max)(CYL__P(max)(S, L2), L2 / f->aa);
-    return lo >= f->lo && hi <= CYL__HOT_HI && !(f->Ha - f->H > CYL__LMAX) && f->tmin <= f->tmax;
+    return lo >= f->lo && hi <= CYL__HOT_HI && !(f->Ha - f->H > CYL__LMAX);
 }
 
 /* ------------------------------------------------------------------ decisions */
