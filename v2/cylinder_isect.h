@@ -577,7 +577,7 @@ CYL__INL CYL__L CYL__P(wall_roots)(const CYL__P(frame) *f, CYL__L t[2])
    NaN ends, which in_slab reads as inclusive (the rim belongs to the surface). */
 CYL__INL void CYL__P(slab)(const CYL__P(frame) *f, CYL__L s[2])
 {
-    CYL__L p0 = (-f->Ha - f->z0) / f->zeta, p1 = (f->Ha - f->z0) / f->zeta;
+    CYL__L p0 = (f->Ha + f->z0) / -f->zeta, p1 = (f->Ha - f->z0) / f->zeta;
     s[0] = CYL__P(min)(p0, p1), s[1] = CYL__P(max)(p0, p1);
 }
 
