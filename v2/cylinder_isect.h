@@ -327,9 +327,11 @@ CYL_DEF const char *cyl_strerror(int code)
    (2^-60), upper 2^900 (2^120); scaled on the exact path, r²|a|² down to 2^-600 (2^-76). */
 #if CYL__MANT == 24
 #define CYL__RMAX FLT_MAX
+#define CYL__RMIN FLT_MIN
 #define CYL__RSQRT(x) CYL_SQRTF(x)
 #else
 #define CYL__RMAX DBL_MAX
+#define CYL__RMIN DBL_MIN
 #define CYL__RSQRT(x) CYL_SQRT(x)
 #endif
 #if CYL__LD
@@ -407,11 +409,8 @@ static inline CYL__R CYL__P(scale)(CYL__R x, int k)
 {
     CYL__UINT b;
     CYL__R p;
-    while (k > CYL__EBIAS || k < 1 - CYL__EBIAS) {
-        int s = k > 0 ? CYL__EBIAS : 1 - CYL__EBIAS;
-        x = CYL__P(scale)(x, s);
-        k -= s;
-    }
+    for (; k > CYL__EBIAS; k -= CYL__EBIAS) x *= 2 / CYL__RMIN;         /* 2^EBIAS */
+    for (; k < 1 - CYL__EBIAS; k += CYL__EBIAS - 1) x *= CYL__RMIN;     /* 2^(1 - EBIAS) */
     b = (CYL__UINT)(k + CYL__EBIAS) << (CYL__MANT - 1);
     CYL__B(memcpy)(&p, &b, sizeof p);
     return x * p;
@@ -849,6 +848,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__MANT
 #undef CYL__EBIAS
 #undef CYL__RMAX
+#undef CYL__RMIN
 #undef CYL__LMAX
 #undef CYL__LU
 #undef CYL__LSQRT
