@@ -497,18 +497,18 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
     CYL__L ml[3], S, L2, lo, hi;
-    if (f->cold) { /* w = w + wl exactly there */
-        CYL__P(cross_exact)(f->a, f->d, f->s);
+    if (f->cold) CYL__P(cross_exact)(f->a, f->d, f->s);
+    else CYL__P(cross3)(f->a, f->d, f->s);
+    f->zeta = CYL__P(dot)(f->a, f->d);
+    f->A = CYL__P(dot)(f->s, f->s);
+    f->ad = f->A + f->zeta * f->zeta; /* |a|²|d|² */
+    if (f->cold) { /* m after s's dots: fewer values live; w = w + wl exactly there */
         CYL__P(cross_exact)(f->a, f->w, f->m);
         CYL__P(cross3)(f->a, f->wl, ml);
         CYL__P(lin)(1, f->m, 1, ml, f->m);
     } else {
-        CYL__P(cross3)(f->a, f->d, f->s);
+        CYL__P(cross3)(f->a, f->w, f->m);
     }
-    f->zeta = CYL__P(dot)(f->a, f->d);
-    f->A = CYL__P(dot)(f->s, f->s);
-    f->ad = f->A + f->zeta * f->zeta; /* |a|²|d|² */
-    if (!f->cold) CYL__P(cross3)(f->a, f->w, f->m); /* after s's dots: fewer values live */
     f->z0 = CYL__P(dot)(f->a, f->w);
     f->P = CYL__P(dot)(f->w, f->s);
     f->mm = CYL__P(dot)(f->m, f->m);
@@ -532,20 +532,17 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 }
 
 /* ------------------------------------------------------------------ decisions */
-/* Parallel (N7): sin²(d, a) = A/(|a|²|d|²) at most the tolerance's square. */
-CYL__INL int CYL__P(parallel)(const CYL__P(frame) *f)
-{
-    const CYL__L p2 = (CYL__L)CYL__PARA * (CYL__L)CYL__PARA;
-    return f->A <= p2 * f->ad;
-}
+/* Parallel (N7): sin²(d, a) = A/(|a|²|d|²) at most the tolerance's square; as a margin, the
+   ray is parallel where it is <= 0. */
+CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f)
+{ return f->A / ((CYL__L)CYL__PARA * (CYL__L)CYL__PARA) - f->ad; }
 
 /* Rays for the exact path, as a margin below lo: parallel ones and, unless L makes the inputs'
    products exact, those whose plain s or m loses over 8 bits (N6): d or o − c within 2^-8 of
    the axis direction. */
 CYL__INL CYL__L CYL__P(steep)(const CYL__P(frame) *f)
 {
-    const CYL__L p2 = (CYL__L)CYL__PARA * (CYL__L)CYL__PARA;
-    if (sizeof(CYL__L) > sizeof(CYL__R)) return f->A / p2 - f->ad;
+    if (sizeof(CYL__L) > sizeof(CYL__R)) return CYL__P(parallel)(f);
     return CYL__P(min)(65536 * f->A - f->ad, 65536 * f->mm - f->aww);
 }
 
@@ -803,7 +800,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         f.exact = 0;
         if (!CYL__P(derive)(&f)) return CYL_MISS;
     }
-    f.par = CYL__P(parallel)(&f);
+    f.par = CYL__P(parallel)(&f) <= 0;
     return CYL__P(answer)(&f, opts, want, hits);
 }
 
