@@ -16,7 +16,7 @@
 #             together (the last two also as C++11); the contract suite with CYL_FLOAT_WIDE=0,
 #             with CYL_NO_FAST_PATH (not under V=2), with a hardware FMA (-mfma, where this
 #             machine has one), and with every entry point forced inline
-#             (tests/config/cfg_forced_inline.h)
+#             (tests/config/cfg_forced_inline.h; not under V=2, where that is the default)
 #   prereq    -ffast-math must stop the build at the header's #error (gcc and clang)
 # make check also builds and runs every topic alone (tests-topics: proves test-one's builds).
 
@@ -84,12 +84,13 @@ $(eval $(call TESTS_CFG_RUNNER,two_tu_cxx,tests/config/cfg_two_tu_main.c tests/c
 # double FPU), and Kahan's FMA products where the FMA is hardware (x86-64 with FMA3 only, so
 # that the runner can execute here).
 $(eval $(call TESTS_CFG_RUNNER,float_narrow,tests/test_float.c,-DCYL_FLOAT_WIDE=0,c))
-# The contract suite with every entry point forced inline (the header's advice where a caller
-# calls one from several places): each call site folds its own constant options.
-$(eval $(call TESTS_CFG_RUNNER,forced_inline,tests/test_float.c,-include tests/config/cfg_forced_inline.h,c))
-# ... and without it: the compensated solver answers every call (CYL_NO_FAST_PATH; v1 only:
-# v2 has no such switch, so V=2 leaves these two out)
+# v1 only (V=2 leaves these out): the contract suite with every entry point forced inline (the
+# header's advice where a caller calls one from several places: each call site folds its own
+# constant options), which is v2's default CYL_DEF, so the runner would repeat test_float; and
+# without the fast path: the compensated solver answers every call (CYL_NO_FAST_PATH, which v2
+# does not have).
 ifneq ($(V),2)
+$(eval $(call TESTS_CFG_RUNNER,forced_inline,tests/test_float.c,-include tests/config/cfg_forced_inline.h,c))
 $(eval $(call TESTS_CFG_RUNNER,no_fast_float,tests/test_float.c,-DCYL_NO_FAST_PATH,c))
 $(eval $(call TESTS_CFG_RUNNER,no_fast_double,tests/test_double.c,-DCYL_NO_FAST_PATH,c))
 endif
