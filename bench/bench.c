@@ -232,6 +232,8 @@ int main(int argc, char **argv)
                     jnum(jf, "ulp_p99", t->ulp_p99, 1);
                     jnum(jf, "ulp_max", t->ulp_max, 1);
                     jnum(jf, "cond_ulp_max", t->cond_ulp_max, 1);
+                    jnum(jf, "stab_max", t->stab_max, 1);
+                    fprintf(jf, "\"stab_worst_index\": %d, ", t->stab_worst_index);
                     jnum(jf, "rel_max", t->rel_max, 1);
                     jnum(jf, "nrm_max", t->nrm_max, 1);
                     jnum(jf, "ns", ns[j], 0);

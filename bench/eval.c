@@ -321,6 +321,42 @@ double ev_kappa(const ev_set *s, int i)
     return kap * scale / T;
 }
 
+/* The full first-order condition of the reference t: each component of w = o - c, d and a,
+   and r and h, moved by a relative u (componentwise), moves t by at most kappa_full·u·|t|.
+   From the surface's equation at the hit x = w + t·d, with â = a/|a|, v = â·x and g = x − v·â
+   (|g| = r on the wall):
+     wall  |g|² − (stuff of r) = 0:  δt ≤ u·(Σ|g_j|(|w_j| + |t·d_j| + |v·â_j|) + r²) / |g·d|
+     cap   â·x ∓ h/2 = 0:           δt ≤ u·(Σ|â_j|(|w_j| + |t·d_j|) + Σ|g_j·â_j| + h/2) / |â·d|
+   (∂/∂a of â·x is g/|a|; of |g|², −2v·g/|a|.) ev_kappa counts r alone on the wall and nothing
+   on a cap; this counts every datum, so it is at least 2 on most hits. ulps/kappa_full is how
+   far an answer's error exceeds what the data's own rounding could cause: about 1 for a
+   backward-stable method, whatever the hit's conditioning. */
+double ev_kappa_full(const ev_set *s, int i)
+{
+    const bench_case *k = &s->cases[i];
+    const cyl_ref_hit *hh = &s->ref[i].hit[0];
+    long double w[3], d[3], ah[3], x[3], g[3], aa = 0, v = 0, t = hh->t[0], num = 0, den = 0;
+    int j;
+    if (s->ref[i].status != CYL_HIT || !(t < 0 || t > 0)) return (double)INFINITY;
+    for (j = 0; j < 3; j++) aa += (long double)k->a[j] * k->a[j];
+    for (j = 0; j < 3; j++) {
+        w[j] = (long double)k->o[j] - k->c[j], d[j] = k->d[j], ah[j] = k->a[j] / sqrtl(aa);
+        x[j] = w[j] + t * d[j], v += ah[j] * x[j];
+    }
+    for (j = 0; j < 3; j++) g[j] = x[j] - v * ah[j];
+    for (j = 0; j < 3; j++) {
+        if (hh->part == CYL_SIDE) {
+            num += fabsl(g[j]) * (fabsl(w[j]) + fabsl(t * d[j]) + fabsl(v * ah[j]));
+            den += g[j] * d[j];
+        } else {
+            num += fabsl(ah[j]) * (fabsl(w[j]) + fabsl(t * d[j])) + fabsl(g[j] * ah[j]);
+            den += ah[j] * d[j];
+        }
+    }
+    num += hh->part == CYL_SIDE ? (long double)k->r * k->r : (long double)k->h / 2;
+    return (double)(num / fabsl(den) / fabsl(t));
+}
+
 int ev_well_conditioned(const ev_set *s, int i)
 {
     return ev_kappa(s, i) <= EV_KAPPA_MAX && s->ref[i].margin > ev_band(s->prec);
@@ -388,7 +424,7 @@ void ev_eval(const ev_variant *v, const ev_set *s, ev_stats *st)
     double *ulps = (double *)malloc(sizeof(double) * (size_t)(s->n > 0 ? s->n : 1));
     int i, nu = 0;
     memset(st, 0, sizeof *st);
-    st->miscls_worst_index = st->cond_worst_index = st->terr_fail_index = -1;
+    st->miscls_worst_index = st->cond_worst_index = st->stab_worst_index = st->terr_fail_index = -1;
     if (!ulps) abort();
 
     for (i = 0; i < s->n; ++i) {
@@ -446,6 +482,13 @@ void ev_eval(const ev_variant *v, const ev_set *s, ev_stats *st)
             st->compared++;
             ulps[nu++] = u;
             if (rel > st->rel_max) st->rel_max = rel;
+            if (ref == &s->ref[i] && ref->margin > band) {
+                double q = u / ev_kappa_full(s, i);
+                if (q > st->stab_max || st->stab_worst_index < 0) {
+                    if (q > st->stab_max) st->stab_max = q;
+                    if (q >= st->stab_max) st->stab_worst_index = i;
+                }
+            }
             if (ref == &s->ref[i] && ev_well_conditioned(s, i)) {
                 st->cond_n++;
                 if (u > st->cond_ulp_max || st->cond_worst_index < 0) {

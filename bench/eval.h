@@ -76,6 +76,8 @@ typedef struct ev_stats {
     int cond_n;                 /* compared hits that are well-conditioned */
     double cond_ulp_max;        /* max ulps over those */
     int cond_worst_index;
+    double stab_max;            /* max ulps / ev_kappa_full over compared hits above the band */
+    int stab_worst_index;
     double nrm_max;             /* max |n - n_exact| (about the angle), margin above the band */
     int terr_checked, terr_fail;            /* exact t outside [t - t_err, t + t_err] */
     int terr_fail_index;
@@ -102,5 +104,9 @@ double ev_kappa(const ev_set *s, int i);
 /* Is the case well-conditioned for t (kappa <= EV_KAPPA_MAX and margin above the band)? */
 #define EV_KAPPA_MAX 1.0 /* ulps targets apply where a relative data change u moves t by <= 1 ulp */
 int ev_well_conditioned(const ev_set *s, int i);
+
+/* The full first-order condition of t (every datum moved by a relative u), in units of u|t|:
+   the ulps a backward-stable method may err by, about. */
+double ev_kappa_full(const ev_set *s, int i);
 
 #endif

@@ -40,9 +40,9 @@ int main(int argc, char **argv)
            k->a[2]);
     printf("  r = %a  h = %a  tmin = %a  tmax = %a\n", k->r, k->h, k->tmin, k->tmax);
     printf("reference: status %d count %d  e %.6g  sin2 %.6g  margins: tangent %.3g parallel "
-           "%.3g rim %.3g trange %.3g -> %.3g  kappa %.3g  well-conditioned %d\n",
+           "%.3g rim %.3g trange %.3g -> %.3g  kappa %.3g (full %.3g)  well-conditioned %d\n",
            ref->status, ref->count, ref->e, ref->sin2, ref->m_tangent, ref->m_parallel,
-           ref->m_rim, ref->m_trange, ref->margin, ev_kappa(&s, idx),
+           ref->m_rim, ref->m_trange, ref->margin, ev_kappa(&s, idx), ev_kappa_full(&s, idx),
            ev_well_conditioned(&s, idx));
     for (j = 0; j < ref->count; ++j)
         printf("  hit %d: t %.17g (%a)  part %d  flags %u  v %.9g  n {%.9g, %.9g, %.9g}\n", j,

@@ -89,6 +89,7 @@ def agg(rows):
         "compared": sum(r["compared"] for r in rows),
         "cond_n": sum(r["cond_n"] for r in rows),
         "cond_ulp_max": max([r["cond_ulp_max"] for r in rows] or [0.0]),
+        "stab_max": max([r.get("stab_max", 0.0) for r in rows] or [0.0]),
         "ulp_p99": max([r["ulp_p99"] for r in rows] or [0.0]),
         "rel_max": max([r["rel_max"] for r in rows] or [0.0]),
         "nrm_max": max([r["nrm_max"] for r in rows] or [0.0]),
@@ -277,7 +278,11 @@ def main():
              "tolerance, rim, tmin/tmax); *beyond band* counts misclassifications whose margin "
              "exceeds 2^-(p-8), i.e. that a correct-to-a-few-ulps decision would not make. "
              "**ulps**: |t - t_exact| in ulps of t_exact; *cond* restricts to well-conditioned "
-             "hits (a relative data change of u moves t by at most one ulp). **rel**: |t - "
+             "hits (a relative data change of u moves t by at most one ulp, ev_kappa: the radius on a "
+             "wall, nothing on a cap); *ulps/κ*: the largest ulps per unit of the full condition "
+             "κ (every component of o − c, d, a and r, h moved by a relative u moves t by at most "
+             "κ·u·|t|; bench/eval.c, ev_kappa_full) over every hit above the band: about 1 for "
+             "a backward-stable method, however ill-conditioned the hit. **rel**: |t - "
              "t_exact| / max(|t|, r/|d|). **n err**: |n - n_exact|. **t_err fail**: exact t "
              "outside [t - t_err, t + t_err] (must be 0).\n")
 
@@ -343,7 +348,8 @@ def main():
                  f"2^-{prec - 8}, t within 4 ulps | {PNAME[prec]} | {'PASS' if ok else 'FAIL'} | "
                  f"{a['miscls_out']} beyond band (intersect_all {a['all_out']}, occluded "
                  f"{a['occ_out']}); max {fmt(a['cond_ulp_max'])} ulps over "
-                 f"{a['cond_n']} well-conditioned hits |")
+                 f"{a['cond_n']} well-conditioned hits; at most {fmt(a['stab_max'])} ulps per "
+                 f"unit of the full condition κ |")
     for prec in (24, 53):
         rs = sel(prec, "lib+PRECISE")
         if not rs:
@@ -420,8 +426,8 @@ def main():
         L.append(f"### {PNAME[prec]}\n")
         L.append("| family | caps | variant | cases | ref hits | misclassified (beyond band) | "
                  "worst margin | all / occluded beyond band | ulps median | p99 | max "
-                 "| cond max (n) | max rel | max n err | t_err fail | ns/call | insn/call |")
-        L.append("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+                 "| cond max (n) | ulps/κ | max rel | max n err | t_err fail | ns/call | insn/call |")
+        L.append("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
         for fam in R["families"]:
             for caps in (0, 1):
                 for r in sel(prec, None, [fam], caps):
@@ -432,6 +438,7 @@ def main():
                              f"{all_occ(r)} | "
                              f"{fmt(r['ulp_median'])} | {fmt(r['ulp_p99'])} | "
                              f"{fmt(r['ulp_max'])} | {fmt(r['cond_ulp_max'])} ({r['cond_n']}) | "
+                             f"{fmt(r.get('stab_max', float('nan')))} | "
                              f"{fmt(r['rel_max'])} | "
                              f"{fmt(r['nrm_max']) if 'NO_NORMAL' not in r['variant'] else '-'} | "
                              f"{tf} | {fmt(r['ns'])} | {fmt(r['insn'], 4)} |")

@@ -1,5 +1,6 @@
 # Exact reference, stiff/extreme case families, error and cost against the alternatives.
-#   make test     runs build/bench/test_accuracy{,_narrow,_fma} (accuracy targets on a fixed-seed sample)
+#   make test     runs build/bench/test_accuracy{,_narrow,_fma} (accuracy targets on a fixed-seed
+#                 sample; ACCURACY_TARGETS=off: the *_no4ulps builds, see below)
 #   make report   bench/REPORT.md, bench/error_vs_time.png, docs/accuracy.md's table: accuracy,
 #                 time (median of BENCH_RUNS runs) and instructions per call (callgrind)
 #                 (BENCH_SEED, BENCH_N change the seed and the cases per family)
@@ -49,27 +50,25 @@ $(BENCH_BUILD)/unity.o: $(UNITY_C) | unity
 	@mkdir -p $(@D)
 	$(GCC) -O2 $(UNITY_FLAGS) -w -c $< -o $@
 
-# The accuracy runner: portable flags (no -march), as most users build.
-$(BENCH_BUILD)/test_accuracy: bench/test_accuracy.c $(BENCH_SRCS) $(BENCH_HDRS) $(BENCH_BUILD)/unity.o
-	@mkdir -p $(@D)
-	$(GCC) $(WARN_C) -O2 $(UNITY_FLAGS) $(BENCH_INC) $< $(BENCH_SRCS) -x none $(BENCH_BUILD)/unity.o $(BENCH_LIBS) -o $@
-# The same targets for the float API computed in float (as on targets without a double FPU).
-$(BENCH_BUILD)/test_accuracy_narrow: bench/test_accuracy.c $(BENCH_SRCS) $(BENCH_HDRS) $(BENCH_BUILD)/unity.o
-	@mkdir -p $(@D)
-	$(GCC) $(WARN_C) -O2 -DCYL_FLOAT_WIDE=0 $(UNITY_FLAGS) $(BENCH_INC) $< $(BENCH_SRCS) -x none $(BENCH_BUILD)/unity.o $(BENCH_LIBS) -o $@
-# The same targets with Kahan's FMA products (where this machine has FMA3).
-$(BENCH_BUILD)/test_accuracy_fma: bench/test_accuracy.c $(BENCH_SRCS) $(BENCH_HDRS) $(BENCH_BUILD)/unity.o
-	@mkdir -p $(@D)
-	$(GCC) $(WARN_C) -O2 -mfma $(UNITY_FLAGS) $(BENCH_INC) $< $(BENCH_SRCS) -x none $(BENCH_BUILD)/unity.o $(BENCH_LIBS) -o $@
-
-# ACCURACY_TARGETS=off leaves these runners out: CI's run of v2 (.ci/run), whose default tier
-# does not meet target 2's 4 ulps yet (issue 28); `make test V=2` runs them.
+# The accuracy runners. ACCURACY_TARGETS=off builds them as *_no4ulps, where target 2's 4 ulps
+# is printed but not asserted (every other target still is): CI's run of v2 (.ci/run), whose
+# default tier does not meet it (issue 28); `make test V=2` asserts it.
 ACCURACY_TARGETS ?= on
-ifneq ($(ACCURACY_TARGETS),off)
-RUNNERS      += $(BENCH_BUILD)/test_accuracy $(BENCH_BUILD)/test_accuracy_narrow
+ACC_SUFFIX := $(if $(filter off,$(ACCURACY_TARGETS)),_no4ulps)
+ACC_FLAGS  := $(if $(ACC_SUFFIX),-DACCURACY_4ULPS=0)
+# $(1) runner name, $(2) flags: the library built as most users build it (no -march) ...
+define BENCH_ACC_RUNNER
+$(BENCH_BUILD)/$(1)$(ACC_SUFFIX): bench/test_accuracy.c $(BENCH_SRCS) $(BENCH_HDRS) $(BENCH_BUILD)/unity.o
+	@mkdir -p $$(@D)
+	$(GCC) $(WARN_C) -O2 $(2) $(ACC_FLAGS) $(UNITY_FLAGS) $(BENCH_INC) $$< $(BENCH_SRCS) -x none $(BENCH_BUILD)/unity.o $(BENCH_LIBS) -o $$@
+RUNNERS += $(BENCH_BUILD)/$(1)$(ACC_SUFFIX)
+endef
+$(eval $(call BENCH_ACC_RUNNER,test_accuracy,))
+# ... for the float API computed in float (as on targets without a double FPU) ...
+$(eval $(call BENCH_ACC_RUNNER,test_accuracy_narrow,-DCYL_FLOAT_WIDE=0))
+# ... and with a hardware FMA (where this machine has FMA3).
 ifeq ($(HOST_FMA),1)
-RUNNERS      += $(BENCH_BUILD)/test_accuracy_fma
-endif
+$(eval $(call BENCH_ACC_RUNNER,test_accuracy_fma,-mfma))
 endif
 
 # The measuring tools (bench, probe) show warnings without stopping on them, so that a warning
