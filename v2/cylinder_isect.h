@@ -99,11 +99,12 @@
 
    ACCURACY
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
-   t_err held the exact t on all 424,744 float and 432,263 double hits; nothing misclassified
-   beyond the band but 569 double flat disks seen along the axis (N6). t on well-conditioned
-   hits: float within 0.5 ulps in every family; double within 7 ulps on the well family's
-   walls, 14.4 on its caps, 35.9 on the huge family's caps (cancellation of z0 + Ha, N6), 271
-   for origins far along the axis (thin): short of the 4 ulps aimed at, a plain tier's limit.
+   t_err held the exact t on all 424,744 float and 433,703 double hits; nothing misclassified
+   beyond the band. t on well-conditioned hits: float within 0.5 ulps in every family; double
+   within 0.5 where the exact path answers (tiny scenes, parallel rays: N8), on the hot path
+   within 7 ulps on the well family's walls, 14.4 on its caps, 35.9 on the huge family's caps
+   (cancellation of z0 + Ha, N6), 271 for origins far along the axis (thin): short of the
+   4 ulps aimed at, a plain tier's limit.
    Per unit of the data's condition κ (o − c, d, a, r, h each moved by a relative u move t by
    κ·u·|t|; REPORT's ulps/κ) double errs by at most 1.8 on those families, 2.7 on all.
 
@@ -382,6 +383,7 @@ typedef struct CYL__P(cross) { CYL__L t, h; int part, ok; unsigned flags; } CYL_
 
 static int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                         int want, CYL__N(hit) *hits);
+static void CYL__P(refine)(const CYL__P(frame) *f, int wall, CYL__L t[2], CYL__L s[2]);
 
 /* ------------------------------------------------------------------ small tools */
 CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return CYL__LABS(x); }
@@ -723,6 +725,8 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
     if (!f->par) sq = CYL__P(wall_roots)(f, t);
     else t[0] = -CYL__LINF, t[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
     CYL__P(slab)(f, s);
+    if (f->cold && f->exact && sizeof(CYL__L) == sizeof(CYL__R)) /* the exact path's t (N8) */
+        CYL__P(refine)(f, kind == 2 && !f->par, t, s);
     x = CYL__P(crossing)(f, opts, 0, t, s, sq, tan); /* entry, then exit: no loop, so that */
     if (x.ok) {                                       /* k and the arrays fold away */
         if (want == 0) return 1;
@@ -735,6 +739,87 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
 }
 
 /* ------------------------------------------------------------------ the exact path */
+/* A compensated sum (N8): s rounded, c the sum of its errors; x·y's error exact by FMA. */
+typedef struct CYL__P(acc) { CYL__L s, c; } CYL__P(acc);
+CYL__INL void CYL__P(acc_add)(CYL__P(acc) *q, CYL__L x)
+{
+    CYL__L s = q->s + x, z = s - q->s;
+    q->c += (q->s - (s - z)) + (x - z), q->s = s;
+}
+CYL__INL void CYL__P(acc_mul)(CYL__P(acc) *q, CYL__L x, CYL__L y)
+{
+    CYL__L p = x * y;
+    CYL__P(acc_add)(q, p), q->c += CYL__LFMA(x, y, -p);
+}
+/* The sum as a pair hi + lo, hi = rounded sum. */
+CYL__INL CYL__L CYL__P(acc_pair)(const CYL__P(acc) *q, CYL__L *lo)
+{
+    CYL__L h = q->s + q->c;
+    *lo = q->c - (h - q->s);
+    return h;
+}
+
+/* x = w + t·d as pairs xh + xl (w exact as w + wl). */
+CYL__INL void CYL__P(point)(const CYL__P(frame) *f, CYL__L t, CYL__L xh[3], CYL__L xl[3])
+{
+    CYL__P(acc) q;
+    int i;
+    for (i = 0; i < 3; i++) {
+        q.s = f->w[i], q.c = f->wl[i];
+        CYL__P(acc_mul)(&q, t, f->d[i]);
+        xh[i] = CYL__P(acc_pair)(&q, &xl[i]);
+    }
+}
+
+/* Newton's step at t on the wall's residual |a × x|² − r²|a|² (its compensated sum, N8). */
+CYL__INL CYL__L CYL__P(wall_step)(const CYL__P(frame) *f, CYL__L t, CYL__L aah, CYL__L aal)
+{
+    CYL__L xh[3], xl[3], yh, yl, r2 = f->r * f->r, g = 0;
+    CYL__P(acc) q, F = {0, 0};
+    int i;
+    CYL__P(point)(f, t, xh, xl);
+    for (i = 0; i < 3; i++) { /* y = a × x, componentwise as a pair, into |y|² */
+        int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+        q.s = q.c = 0;
+        CYL__P(acc_mul)(&q, f->a[i1], xh[i2]), CYL__P(acc_mul)(&q, -f->a[i2], xh[i1]);
+        q.c += f->a[i1] * xl[i2] - f->a[i2] * xl[i1];
+        yh = CYL__P(acc_pair)(&q, &yl);
+        CYL__P(acc_mul)(&F, yh, yh), F.c += 2 * yh * yl, g += yh * f->s[i];
+    }
+    CYL__P(acc_mul)(&F, -r2, aah), F.c -= CYL__LFMA(f->r, f->r, -r2) * aah + r2 * aal;
+    return (F.s + F.c) / (2 * g);
+}
+
+/* The exact path's slab ends and wall roots, moved to their residuals' roots by Newton's
+   method on compensated sums (N8): a cap plane's a·x ± H|a| (linear: one step), the wall's
+   |a × x|² − r²|a|² (at most three steps). A wall root moving by half the roots' gap stays. */
+CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, int wall, CYL__L t[2], CYL__L s[2])
+{
+    CYL__L xh[3], xl[3], aah, aal, sh, sl, gap = (t[1] - t[0]) / 2, v[2], dt;
+    CYL__P(acc) F, aa = {0, 0};
+    int i, k, it;
+    for (i = 0; i < 3; i++) CYL__P(acc_mul)(&aa, f->a[i], f->a[i]);
+    aah = CYL__P(acc_pair)(&aa, &aal);
+    sh = CYL__LSQRT(aah), sl = (CYL__LFMA(-sh, sh, aah) + aal) / (2 * sh);
+    for (k = 0; k < 2; k++) { /* s[k] lies on the low plane where k == 0 and ζ > 0 agree */
+        CYL__L H = (k == 0) == (f->zeta > 0) ? f->H : -f->H;
+        F.s = F.c = 0;
+        CYL__P(point)(f, s[k], xh, xl);
+        for (i = 0; i < 3; i++) CYL__P(acc_mul)(&F, f->a[i], xh[i]), F.c += f->a[i] * xl[i];
+        CYL__P(acc_mul)(&F, H, sh), F.c += H * sl;
+        v[k] = s[k] - (F.s + F.c) / f->zeta;
+    }
+    if (v[0] <= v[1]) s[0] = v[0], s[1] = v[1]; /* ζ = 0 (no ends) gives NaN: s stays */
+    for (k = 0; k < 2 && wall; k++) {
+        v[k] = t[k];
+        for (it = 0; it < 3; it++) { /* quadratic convergence: the last step is below u|t| */
+            v[k] -= dt = CYL__P(wall_step)(f, v[k], aah, aal);
+            if (!(CYL__P(abs)(dt) > CYL__LU * CYL__P(abs)(v[k]))) break;
+        }
+        if (CYL__P(abs)(v[k] - t[k]) < gap) t[k] = v[k];
+    }
+}
+
 /* Validation in the documented order (the hot path sent what its range test refused). */
 static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
 {
@@ -859,7 +944,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__COLD_LO
 #endif /* CYL__BODY */
 
-/* NOTES (cited from the code as N1 .. N7); u is the working type's unit roundoff
+/* NOTES (cited from the code as N1 .. N8); u is the working type's unit roundoff
    N1. One formulation (DESIGN.md of the project): w = o − c, s = a × d, m = a × w (cross
        products, never projections: no cancellation for rays near the axis direction or
        origins far along it), A = s·s, B = m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d,
@@ -868,8 +953,9 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
    N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², Ha and
        |a|⁴|d|²(|w|² + r²) against one range; every NaN, infinity, zero or out-of-range input
        fails it and goes to the exact path, which validates in the documented order and
-       scales lengths, d and a by powers of two (exact: a scene scaled by 2^k gives the same
-       bits scaled). Within the range nothing the bounds use overflows or underflows.
+       scales lengths, d and a by powers of two (exact: its answers to a scene scaled by 2^k
+       are the same bits scaled; the hot path's, without N8's step, agree within t_err).
+       Within the range nothing the bounds use overflows or underflows.
    N3. Geometric discriminant B² − AC = |a|²·D, D = r²A − P², P = w·s (Ray Tracing Gems,
        ch. 7; pbrt-v4 cylinders): no difference of large squares for far origins.
    N4. Stable root pair q = −(B + sgn(B)√(|a|²D)), t = q/A and C/q (Numerical Recipes §5.6);
@@ -895,4 +981,11 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        it again a few dozen radii along, a crossing its inputs determine (a × d is exact for
        an axis-aligned a), which the rule drops: pinned by
        test_parallel_rule_drops_secondary_ray_from_wall in tests/contract/tangent.c.
+   N8. The exact path's t: before any decision, each wall root and slab end takes one Newton
+       step t − F/F' on its residual (wall: F = |a × x|² − r²|a|², F' = 2(a × x)·s; cap plane:
+       F = a·x ± H|a|, F' = ζ), x = w + t·d, with w exact as a pair and each product's error
+       kept by FMA in a compensated sum (Ogita, Rump, Oishi, "Accurate sum and dot product",
+       SIAM J. Sci. Comput. 26, 2005): F's error is about u|F| + u²(r²|a|² + |a|²|x|²), so t
+       lands within about an ulp of the root, and the rim and t range decide on it. Not for
+       tangent contacts (F' vanishes), nor for the float API in double (already within 2^-29).
 */

@@ -106,9 +106,43 @@ static int get_any_scene(size_t idx, Ray *ray, Cyl *cyl, const char **name)
     return special_scene((int)(idx - N_SCENES), ray, cyl, name);
 }
 
-/* Lengths scaled by 2^k (o, c, r, h; d and a fixed): t, v and t_err scale by exactly 2^k, the
- * normal, part and flags are identical. d scaled by 2^k: t and t_err scale by 2^-k. a scaled:
- * nothing changes. Powers of two are exact, so exactness is the property under test. */
+/* The scaled hit against the base one scaled: exactly where the answers are correctly rounded
+ * (v1); in v2's default tier the exact path, which answers the scaled scene out of the hot
+ * path's range, takes a compensated step the hot path does not (its N8), so there the two
+ * [t - t_err, t + t_err] must meet (each holds the exact t, which scales exactly), v agree
+ * within what t's and its own rounding allow, n within TOL_NORMAL. */
+#define SCALE_EXACT (CYL_VERSION_MAJOR < 2)
+static void chk_scaled_at(const Hit *base, const Hit *h, const Ray *ray, const Cyl *cyl, int le,
+                          int de, const char *m, int line)
+{
+    long double tb = (long double)T_LDEXP(base->t, le - de), eb, d2 = 0, w2 = 0, size;
+    int i;
+    if (SCALE_EXACT) {
+        chk_exact_at(T_LDEXP(base->t, le - de), h->t, m, line);
+        chk_exact_at(T_LDEXP(base->t_err, le - de), h->t_err, m, line);
+        chk_exact_at(T_LDEXP(base->v, le), h->v, m, line);
+        chk_vec_exact_at(h->n, base->n[0], base->n[1], base->n[2], m, line);
+        return;
+    }
+    eb = (long double)T_LDEXP(base->t_err, le - de) + (long double)h->t_err;
+    for (i = 0; i < 3; i++) {
+        long double w = (long double)ray->o[i] - (long double)cyl->c[i];
+        long double d = (long double)ray->d[i];
+        d2 += d * d, w2 += w * w;
+    }
+    size = fmaxl(fmaxl(sqrtl(w2), fabsl((long double)h->t) * sqrtl(d2)),
+                 fmaxl((long double)cyl->r, (long double)cyl->h / 2));
+    UNITY_TEST_ASSERT(fabsl((long double)h->t - tb) <= eb, line, m);
+    chk_near_at((long double)T_LDEXP(base->v, le), (long double)h->v,
+                sqrtl(d2) * eb + TOL_V * size, m, line);
+    chk_vec_near_at(h->n, (long double)base->n[0], (long double)base->n[1],
+                    (long double)base->n[2], TOL_NORMAL, m, line);
+}
+
+/* Lengths scaled by 2^k (o, c, r, h; d and a fixed): t, v and t_err scale by 2^k, the normal,
+ * part and flags are identical. d scaled by 2^k: t and t_err scale by 2^-k. a scaled: nothing
+ * changes. Powers of two are exact: the answers are exactly scaled where correctly rounded, and
+ * agree within their bounds otherwise (chk_scaled_at). */
 static void test_scale_invariance(void)
 {
     static const int exps[] = {T_BIG_EXP, -T_BIG_EXP};
@@ -141,11 +175,7 @@ static void test_scale_invariance(void)
                     sentinel(hs, 2);
                     EQ_INT(n, CYL(intersect_all)(&ray, &cyl, opts, hs), m);
                     for (j = 0; j < n; j++) {
-                        chk_exact_at(T_LDEXP(base[j].t, le - de), hs[j].t, m, __LINE__);
-                        chk_exact_at(T_LDEXP(base[j].t_err, le - de), hs[j].t_err, m, __LINE__);
-                        chk_exact_at(T_LDEXP(base[j].v, le), hs[j].v, m, __LINE__);
-                        chk_vec_exact_at(hs[j].n, base[j].n[0], base[j].n[1], base[j].n[2], m,
-                                         __LINE__);
+                        chk_scaled_at(&base[j], &hs[j], &ray, &cyl, le, de, m, __LINE__);
                         EQ_INT(base[j].part, hs[j].part, m);
                         EQ_INT(base[j].flags, hs[j].flags, m);
                     }
