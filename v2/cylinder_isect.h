@@ -99,7 +99,7 @@
 
    ACCURACY
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
-   t_err held the exact t on all 424,744 float and 433,703 double hits; nothing misclassified
+   t_err held the exact t on all 424,744 float and 433,683 double hits; nothing misclassified
    beyond the band. t on well-conditioned hits: float within 0.5 ulps in every family; double
    within 0.5 where the exact path answers (tiny scenes, parallel rays: N8), on the hot path
    within 7 ulps on the well family's walls, 14.4 on its caps, 35.9 on the huge family's caps
@@ -346,6 +346,10 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LSQRT(x) CYL_SQRT(x)
 #define CYL__LABS(x) CYL__B(fabs)(x)
 #define CYL__LFMA(a, b, c) CYL_FMA(a, b, c)
+#define CYL__LSPLIT 134217729.0 /* 2^27 + 1 */
+#if defined(__FP_FAST_FMA) || defined(__FMA__) || defined(__aarch64__)
+#define CYL__LFASTFMA 1
+#endif
 #define CYL__LTINY 4.9406564584124654e-324 /* 2^-1074 */
 #define CYL__HOT_LO 4.9090934652977266e-91 /* 2^-300 */
 #define CYL__HOT_HI 8.452712498170644e270 /* 2^900 */
@@ -359,6 +363,10 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LSQRT(x) CYL_SQRTF(x)
 #define CYL__LABS(x) CYL__B(fabsf)(x)
 #define CYL__LFMA(a, b, c) CYL_FMAF(a, b, c)
+#define CYL__LSPLIT 4097.0f /* 2^12 + 1 */
+#if defined(__FP_FAST_FMAF) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+#define CYL__LFASTFMA 1
+#endif
 #define CYL__LTINY 1.40129846e-45f /* 2^-149 */
 #define CYL__HOT_LO 8.67361738e-19f /* 2^-60 */
 #define CYL__HOT_HI 1.32922800e36f /* 2^120 */
@@ -739,7 +747,19 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
 }
 
 /* ------------------------------------------------------------------ the exact path */
-/* A compensated sum (N8): s rounded, c the sum of its errors; x·y's error exact by FMA. */
+/* x·y − p for p = x·y rounded, exactly: by FMA where it is one instruction, else by Dekker's
+   split (a call to fma() would spill every register around it). */
+CYL__INL CYL__L CYL__P(prod_err)(CYL__L x, CYL__L y, CYL__L p)
+{
+#ifdef CYL__LFASTFMA
+    return CYL__LFMA(x, y, -p);
+#else
+    CYL__L cx = x * CYL__LSPLIT, cy = y * CYL__LSPLIT, xh = cx - (cx - x), yh = cy - (cy - y);
+    CYL__L xl = x - xh, yl = y - yh;
+    return ((xh * yh - p) + xh * yl + xl * yh) + xl * yl;
+#endif
+}
+/* A compensated sum (N8): s rounded, c the sum of its errors; x·y's error exact. */
 typedef struct CYL__P(acc) { CYL__L s, c; } CYL__P(acc);
 CYL__INL void CYL__P(acc_add)(CYL__P(acc) *q, CYL__L x)
 {
@@ -749,7 +769,7 @@ CYL__INL void CYL__P(acc_add)(CYL__P(acc) *q, CYL__L x)
 CYL__INL void CYL__P(acc_mul)(CYL__P(acc) *q, CYL__L x, CYL__L y)
 {
     CYL__L p = x * y;
-    CYL__P(acc_add)(q, p), q->c += CYL__LFMA(x, y, -p);
+    CYL__P(acc_add)(q, p), q->c += CYL__P(prod_err)(x, y, p);
 }
 /* The sum as a pair hi + lo, hi = rounded sum. */
 CYL__INL CYL__L CYL__P(acc_pair)(const CYL__P(acc) *q, CYL__L *lo)
@@ -779,14 +799,14 @@ CYL__INL CYL__L CYL__P(wall_step)(const CYL__P(frame) *f, CYL__L t, CYL__L aah, 
     int i;
     CYL__P(point)(f, t, xh, xl);
     for (i = 0; i < 3; i++) { /* y = a × x, componentwise as a pair, into |y|² */
-        int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+        const int i1 = i == 2 ? 0 : i + 1, i2 = i == 0 ? 2 : i - 1;
         q.s = q.c = 0;
         CYL__P(acc_mul)(&q, f->a[i1], xh[i2]), CYL__P(acc_mul)(&q, -f->a[i2], xh[i1]);
         q.c += f->a[i1] * xl[i2] - f->a[i2] * xl[i1];
         yh = CYL__P(acc_pair)(&q, &yl);
         CYL__P(acc_mul)(&F, yh, yh), F.c += 2 * yh * yl, g += yh * f->s[i];
     }
-    CYL__P(acc_mul)(&F, -r2, aah), F.c -= CYL__LFMA(f->r, f->r, -r2) * aah + r2 * aal;
+    CYL__P(acc_mul)(&F, -r2, aah), F.c -= CYL__P(prod_err)(f->r, f->r, r2) * aah + r2 * aal;
     return (F.s + F.c) / (2 * g);
 }
 
@@ -795,26 +815,30 @@ CYL__INL CYL__L CYL__P(wall_step)(const CYL__P(frame) *f, CYL__L t, CYL__L aah, 
    |a × x|² − r²|a|² (at most three steps). A wall root moving by half the roots' gap stays. */
 CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, int wall, CYL__L t[2], CYL__L s[2])
 {
-    CYL__L xh[3], xl[3], aah, aal, sh, sl, gap = (t[1] - t[0]) / 2, v[2], dt;
-    CYL__P(acc) F, aa = {0, 0};
+    CYL__L aah, aal, sh, sl, gap = (t[1] - t[0]) / 2, v[2], dt;
+    CYL__P(acc) F, aa = {0, 0}, z = {0, 0}, ze = {0, 0};
     int i, k, it;
     for (i = 0; i < 3; i++) CYL__P(acc_mul)(&aa, f->a[i], f->a[i]);
     aah = CYL__P(acc_pair)(&aa, &aal);
-    sh = CYL__LSQRT(aah), sl = (CYL__LFMA(-sh, sh, aah) + aal) / (2 * sh);
+    sh = CYL__LSQRT(aah), sl = sh * sh; /* √(aah + aal) = sh + sl: one Newton step */
+    sl = ((aah - sl) - CYL__P(prod_err)(sh, sh, sl) + aal) / (2 * sh);
+    for (i = 0; i < 3; i++) /* z0 = a·w and ζ = a·d as pairs */
+        CYL__P(acc_mul)(&z, f->a[i], f->w[i]), z.c += f->a[i] * f->wl[i],
+        CYL__P(acc_mul)(&ze, f->a[i], f->d[i]);
+    z.s = CYL__P(acc_pair)(&z, &z.c), ze.s = CYL__P(acc_pair)(&ze, &ze.c);
     for (k = 0; k < 2; k++) { /* s[k] lies on the low plane where k == 0 and ζ > 0 agree */
-        CYL__L H = (k == 0) == (f->zeta > 0) ? f->H : -f->H;
-        F.s = F.c = 0;
-        CYL__P(point)(f, s[k], xh, xl);
-        for (i = 0; i < 3; i++) CYL__P(acc_mul)(&F, f->a[i], xh[i]), F.c += f->a[i] * xl[i];
-        CYL__P(acc_mul)(&F, H, sh), F.c += H * sl;
+        CYL__L H = (k == 0) == (f->zeta > 0) ? f->H : -f->H, Hh = H * sh;
+        F = z;
+        CYL__P(acc_add)(&F, Hh), F.c += CYL__P(prod_err)(H, sh, Hh) + H * sl;
+        CYL__P(acc_mul)(&F, s[k], ze.s), F.c += s[k] * ze.c;
         v[k] = s[k] - (F.s + F.c) / f->zeta;
     }
     if (v[0] <= v[1]) s[0] = v[0], s[1] = v[1]; /* ζ = 0 (no ends) gives NaN: s stays */
     for (k = 0; k < 2 && wall; k++) {
         v[k] = t[k];
-        for (it = 0; it < 3; it++) { /* quadratic convergence: the last step is below u|t| */
+        for (it = 0; it < 3; it++) { /* what a step leaves is about dt²/(2·gap) */
             v[k] -= dt = CYL__P(wall_step)(f, v[k], aah, aal);
-            if (!(CYL__P(abs)(dt) > CYL__LU * CYL__P(abs)(v[k]))) break;
+            if (!(dt * dt > gap * CYL__LU * CYL__P(abs)(v[k]))) break;
         }
         if (CYL__P(abs)(v[k] - t[k]) < gap) t[k] = v[k];
     }
@@ -938,6 +962,8 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__LSQRT
 #undef CYL__LABS
 #undef CYL__LFMA
+#undef CYL__LSPLIT
+#undef CYL__LFASTFMA
 #undef CYL__RSQRT
 #undef CYL__HOT_HI
 #undef CYL__HOT_LO
