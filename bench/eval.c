@@ -335,12 +335,14 @@ double ev_kappa_full(const ev_set *s, int i)
 {
     const bench_case *k = &s->cases[i];
     const cyl_ref_hit *hh = &s->ref[i].hit[0];
-    long double w[3], d[3], ah[3], x[3], g[3], aa = 0, v = 0, t = hh->t[0], num = 0, den = 0;
+    long double w[3], d[3], ah[3], x[3], g[3], aa = 0, v = 0, t = (long double)hh->t[0];
+    long double num = 0, den = 0;
     int j;
     if (s->ref[i].status != CYL_HIT || !(t < 0 || t > 0)) return (double)INFINITY;
-    for (j = 0; j < 3; j++) aa += (long double)k->a[j] * k->a[j];
+    for (j = 0; j < 3; j++) aa += (long double)k->a[j] * (long double)k->a[j];
     for (j = 0; j < 3; j++) {
-        w[j] = (long double)k->o[j] - k->c[j], d[j] = k->d[j], ah[j] = k->a[j] / sqrtl(aa);
+        w[j] = (long double)k->o[j] - (long double)k->c[j], d[j] = (long double)k->d[j];
+        ah[j] = (long double)k->a[j] / sqrtl(aa);
         x[j] = w[j] + t * d[j], v += ah[j] * x[j];
     }
     for (j = 0; j < 3; j++) g[j] = x[j] - v * ah[j];
@@ -353,7 +355,7 @@ double ev_kappa_full(const ev_set *s, int i)
             den += ah[j] * d[j];
         }
     }
-    num += hh->part == CYL_SIDE ? (long double)k->r * k->r : (long double)k->h / 2;
+    num += hh->part == CYL_SIDE ? (long double)k->r * (long double)k->r : (long double)k->h / 2;
     return (double)(num / fabsl(den) / fabsl(t));
 }
 
