@@ -101,8 +101,8 @@
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
    t_err held the exact t on all 424,744 float and 433,683 double hits; nothing misclassified
    beyond the band. t on well-conditioned hits: float within 0.5 ulps in every family; double
-   within 0.5 where the exact path answers (tiny scenes, parallel rays: N8), on the hot path
-   within 7 ulps on the well family's walls, 14.4 on its caps, 35.9 on the huge family's caps
+   within 0.5 on the tiny family, which the exact path answers (N8), and on the hot path within
+   7 ulps on the well family's walls, 14.4 on its caps, 35.9 on the huge family's caps
    (cancellation of z0 + Ha, N6), 271 for origins far along the axis (thin): short of the
    4 ulps aimed at, a plain tier's limit.
    Per unit of the data's condition κ (o − c, d, a, r, h each moved by a relative u move t by
