@@ -486,10 +486,8 @@ void ev_eval(const ev_variant *v, const ev_set *s, ev_stats *st)
             if (rel > st->rel_max) st->rel_max = rel;
             if (ref == &s->ref[i] && ref->margin > band) {
                 double q = u / ev_kappa_full(s, i);
-                if (q > st->stab_max || st->stab_worst_index < 0) {
-                    if (q > st->stab_max) st->stab_max = q;
-                    if (q >= st->stab_max) st->stab_worst_index = i;
-                }
+                if (st->stab_worst_index < 0 || q > st->stab_max)
+                    st->stab_max = q, st->stab_worst_index = i;
             }
             if (ref == &s->ref[i] && ev_well_conditioned(s, i)) {
                 st->cond_n++;

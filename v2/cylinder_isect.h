@@ -791,10 +791,11 @@ CYL__INL void CYL__P(point)(const CYL__P(frame) *f, CYL__L t, CYL__L xh[3], CYL_
     }
 }
 
-/* Newton's step at t on the wall's residual |a × x|² − r²|a|² (its compensated sum, N8). */
-CYL__INL CYL__L CYL__P(wall_step)(const CYL__P(frame) *f, CYL__L t, CYL__L aah, CYL__L aal)
+/* Newton's step at t on the wall's residual |a × x|² − r²|a|² (its compensated sum, N8);
+   ra: −r²|a|² as its rounded product, that product's error, and the error of r² and |a|². */
+CYL__INL CYL__L CYL__P(wall_step)(const CYL__P(frame) *f, CYL__L t, const CYL__L ra[3])
 {
-    CYL__L xh[3], xl[3], yh, yl, r2 = f->r * f->r, g = 0;
+    CYL__L xh[3], xl[3], yh, yl, g = 0;
     CYL__P(acc) q, F = {0, 0};
     int i;
     CYL__P(point)(f, t, xh, xl);
@@ -806,7 +807,7 @@ CYL__INL CYL__L CYL__P(wall_step)(const CYL__P(frame) *f, CYL__L t, CYL__L aah, 
         yh = CYL__P(acc_pair)(&q, &yl);
         CYL__P(acc_mul)(&F, yh, yh), F.c += 2 * yh * yl, g += yh * f->s[i];
     }
-    CYL__P(acc_mul)(&F, -r2, aah), F.c -= CYL__P(prod_err)(f->r, f->r, r2) * aah + r2 * aal;
+    CYL__P(acc_add)(&F, ra[0]), F.c += ra[1], F.c -= ra[2];
     return (F.s + F.c) / (2 * g);
 }
 
@@ -815,13 +816,15 @@ CYL__INL CYL__L CYL__P(wall_step)(const CYL__P(frame) *f, CYL__L t, CYL__L aah, 
    |a × x|² − r²|a|² (at most three steps). A wall root moving by half the roots' gap stays. */
 CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, int wall, CYL__L t[2], CYL__L s[2])
 {
-    CYL__L aah, aal, sh, sl, gap = (t[1] - t[0]) / 2, v[2], dt;
+    CYL__L aah, aal, sh, sl, p, gap = (t[1] - t[0]) / 2, v[2], dt, r2 = f->r * f->r, ra[3];
     CYL__P(acc) F, aa = {0, 0}, z = {0, 0}, ze = {0, 0};
     int i, k, it;
     for (i = 0; i < 3; i++) CYL__P(acc_mul)(&aa, f->a[i], f->a[i]);
     aah = CYL__P(acc_pair)(&aa, &aal);
-    sh = CYL__LSQRT(aah), sl = sh * sh; /* √(aah + aal) = sh + sl: one Newton step */
-    sl = ((aah - sl) - CYL__P(prod_err)(sh, sh, sl) + aal) / (2 * sh);
+    sh = CYL__LSQRT(aah), p = sh * sh; /* √(aah + aal) = sh + sl: one Newton step */
+    sl = ((aah - p) - CYL__P(prod_err)(sh, sh, p) + aal) / (2 * sh);
+    ra[0] = -r2 * aah, ra[1] = CYL__P(prod_err)(-r2, aah, ra[0]);
+    ra[2] = CYL__P(prod_err)(f->r, f->r, r2) * aah + r2 * aal;
     for (i = 0; i < 3; i++) /* z0 = a·w and ζ = a·d as pairs */
         CYL__P(acc_mul)(&z, f->a[i], f->w[i]), z.c += f->a[i] * f->wl[i],
         CYL__P(acc_mul)(&ze, f->a[i], f->d[i]);
@@ -837,7 +840,7 @@ CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, int wall, CYL__L t[2], CYL
     for (k = 0; k < 2 && wall; k++) {
         v[k] = t[k];
         for (it = 0; it < 3; it++) { /* what a step leaves is about dt²/(2·gap) */
-            v[k] -= dt = CYL__P(wall_step)(f, v[k], aah, aal);
+            v[k] -= dt = CYL__P(wall_step)(f, v[k], ra);
             if (!(dt * dt > gap * CYL__LU * CYL__P(abs)(v[k]))) break;
         }
         if (CYL__P(abs)(v[k] - t[k]) < gap) t[k] = v[k];
@@ -1007,11 +1010,12 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        it again a few dozen radii along, a crossing its inputs determine (a × d is exact for
        an axis-aligned a), which the rule drops: pinned by
        test_parallel_rule_drops_secondary_ray_from_wall in tests/contract/tangent.c.
-   N8. The exact path's t: before any decision, each wall root and slab end takes one Newton
-       step t − F/F' on its residual (wall: F = |a × x|² − r²|a|², F' = 2(a × x)·s; cap plane:
-       F = a·x ± H|a|, F' = ζ), x = w + t·d, with w exact as a pair and each product's error
-       kept by FMA in a compensated sum (Ogita, Rump, Oishi, "Accurate sum and dot product",
-       SIAM J. Sci. Comput. 26, 2005): F's error is about u|F| + u²(r²|a|² + |a|²|x|²), so t
-       lands within about an ulp of the root, and the rim and t range decide on it. Not for
-       tangent contacts (F' vanishes), nor for the float API in double (already within 2^-29).
+   N8. The exact path's t: before any decision, each slab end takes one Newton step t − F/F'
+       on its cap plane's residual F = a·x ± H|a| (F' = ζ), each wall root up to three on
+       F = |a × x|² − r²|a|² (F' = 2(a × x)·s; a step leaves about dt²/(2·gap)), x = w + t·d,
+       with w exact as a pair and each product's error kept exactly (FMA, or Dekker's split)
+       in a compensated sum (Ogita, Rump, Oishi, "Accurate sum and dot product", SIAM J. Sci.
+       Comput. 26, 2005): F's error is about u|F| + u²(r²|a|² + |a|²|x|²), so t lands within
+       about an ulp of the root, and the rim and t range decide on it. Not for tangent
+       contacts (F' vanishes), nor for the float API in double (already within 2^-29).
 */
