@@ -58,6 +58,8 @@
    Decisions (hit or miss, part, tangent, rim, t range) are taken with plain comparisons: each
    is right where its margin exceeds the working type's rounding of the quantities it compares
    (N6); nearer than that either answer may come, and t_err still holds for the part reported.
+   CYL_PRECISE takes them on the exact path's compensated values (N8) instead: right wherever
+   the margin exceeds a few ulps of the tangent band's e, of t or of the slab ends.
 
    Errors, checked in this order; *hit is never touched on an error:
      CYL_E_NULL (-1) a NULL pointer            CYL_E_RADIUS (-5) r <= 0, NaN or infinite
@@ -69,8 +71,9 @@
      CYL_CAPS          solid capped cylinder instead of the open tube
      CYL_OUTWARD       outward normal instead of the ray-facing one
      CYL_NO_TANGENT    grazing contacts within the tangent tolerance are misses
-     CYL_PRECISE       the certified tier: not in this version yet; the header defines
-                       CYL_NO_PRECISE and the bit returns CYL_E_OPTION
+     CYL_PRECISE       every call answered by the exact path (N8): decisions and t from
+                       compensated residuals; `make cost` gives its price (issue 29: the
+                       certified hot path that sends only doubtful calls there is to come)
      CYL_NO_NORMAL     skip the normal: hit.n = {0, 0, 0}
      CYL_NO_ERRBOUND   skip the bound: hit.t_err = +INFINITY
      CYL_TRUSTED       accepted, changes nothing: the hot path validates nothing (one range
@@ -82,6 +85,9 @@
      macro                 default                      effect
      CYL_NO_FLOAT          undefined                    leave out cylf_* (and its code)
      CYL_NO_DOUBLE         undefined                    leave out cyld_*: no double anywhere
+     CYL_NO_PRECISE        undefined; defined where     compile out CYL_PRECISE (the bit then
+                           the float API computes in    returns CYL_E_OPTION)
+                           float (CYL_FLOAT_WIDE 0)
      CYL_DEF               static inline (forced, gcc   qualifier of every public function;
                            and clang unless -Os)        `static inline` lets calls share code
      CYL_SQRTF, CYL_SQRT   the instruction (x86-64,     square roots
@@ -99,8 +105,10 @@
 
    ACCURACY
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
-   t_err held the exact t on all 424,744 float and 433,683 double hits; nothing misclassified
-   beyond the band. t on well-conditioned hits: float within 0.5 ulps in every family; double
+   t_err held the exact t on all 510,492 float and 521,187 double hits; nothing misclassified
+   beyond the band, default or CYL_PRECISE. t on well-conditioned hits: CYL_PRECISE within
+   0.5 ulps in every family, both APIs, at 19 times the end-point routine's instructions
+   (REPORT's headline; `make cost`: 25 times at -O2). Default: float within 0.5 ulps; double
    within 0.5 on the tiny family, which the exact path answers (N8), and on the hot path within
    7 ulps on the well family's walls, 14.4 on its caps, 35.9 on the huge family's caps
    (cancellation of z0 + Ha, N6), 271 for origins far along the axis (thin): short of the
@@ -131,11 +139,6 @@
 #if defined(CYL_NO_FAST_PATH) || defined(CYL_INTERNAL)
 #error "cylinder_isect.h: CYL_NO_FAST_PATH and CYL_INTERNAL are gone in v2 (one path; internals follow CYL_DEF's call site): remove them"
 #endif
-/* v2 has no certified tier yet: CYL_PRECISE is an unknown bit (issue 29 adds it). */
-#ifndef CYL_NO_PRECISE
-#define CYL_NO_PRECISE
-#endif
-
 #include <float.h>
 #include <stdint.h>
 #if !defined(FLT_EVAL_METHOD) || !(FLT_EVAL_METHOD == 0 || FLT_EVAL_METHOD == 16 || FLT_EVAL_METHOD == 32)
@@ -182,7 +185,6 @@
 #define CYL_NO_ERRBOUND  0x20u
 #define CYL_TRUSTED      0x40u
 #define CYL_OPTIONS_ALL  0x7fu
-#define CYL__SUPPORTED   (CYL_OPTIONS_ALL & ~CYL_PRECISE)
 
 /* hit.part */
 #define CYL_SIDE     0
@@ -272,6 +274,15 @@ static inline double cyl__sqrt(double x) { CYL__ROOT(x, "sd", "d"); return x; }
 #endif
 #if CYL_FLOAT_WIDE && defined(CYL_NO_DOUBLE)
 #error "cylinder_isect.h: CYL_FLOAT_WIDE computes in double, which CYL_NO_DOUBLE excludes"
+#endif
+/* CYL_PRECISE's exact path needs the float API in double (for now). */
+#if !CYL_FLOAT_WIDE && !defined(CYL_NO_FLOAT) && !defined(CYL_NO_PRECISE)
+#define CYL_NO_PRECISE
+#endif
+#ifdef CYL_NO_PRECISE
+#define CYL__SUPPORTED (CYL_OPTIONS_ALL & ~CYL_PRECISE)
+#else
+#define CYL__SUPPORTED CYL_OPTIONS_ALL
 #endif
 
 CYL_DEF const char *cyl_strerror(int code)
@@ -383,6 +394,7 @@ typedef struct CYL__N(hit) { CYL__R t, t_err, n[3], v; int part; unsigned flags;
 typedef struct CYL__P(frame) {
     CYL__L w[3], wl[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, tlim, vlim, lo;
     CYL__L s[3], m[3], aa, ad, mm, aww, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha;
+    CYL__L sa[2], ra[3], tc; /* the exact path's |a| and −r²|a|² as pairs, closest approach */
     int et, ev, exact, cold, par; /* cold: the exact path's (FMA products, unscaled output) */
 } CYL__P(frame);
 
@@ -391,7 +403,7 @@ typedef struct CYL__P(cross) { CYL__L t, h; int part, ok; unsigned flags; } CYL_
 
 static int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                         int want, CYL__N(hit) *hits);
-static void CYL__P(refine)(const CYL__P(frame) *f, int wall, CYL__L t[2], CYL__L s[2]);
+static void CYL__P(refine)(const CYL__P(frame) *f, CYL__L t[2], CYL__L s[2]);
 
 /* ------------------------------------------------------------------ small tools */
 CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return CYL__LABS(x); }
@@ -485,7 +497,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
     ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
     f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
-    if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u)
+    if (!ok || !(f.tmin <= f.tmax) || (opts & (CYL_PRECISE | ~CYL__SUPPORTED)) != 0u)
         return CYL__P(cold)(ray, cyl, opts, want, hits);
     return CYL__P(answer)(&f, opts, want, hits);
 }
@@ -733,8 +745,7 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
     if (!f->par) sq = CYL__P(wall_roots)(f, t);
     else t[0] = -CYL__LINF, t[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
     CYL__P(slab)(f, s);
-    if (f->cold && f->exact && sizeof(CYL__L) == sizeof(CYL__R)) /* the exact path's t (N8) */
-        CYL__P(refine)(f, kind == 2 && !f->par, t, s);
+    if (f->cold && f->exact) CYL__P(refine)(f, t, s); /* the exact path's t (N8) */
     x = CYL__P(crossing)(f, opts, 0, t, s, sq, tan); /* entry, then exit: no loop, so that */
     if (x.ok) {                                       /* k and the arrays fold away */
         if (want == 0) return 1;
@@ -791,9 +802,9 @@ CYL__INL void CYL__P(point)(const CYL__P(frame) *f, CYL__L t, CYL__L xh[3], CYL_
     }
 }
 
-/* Newton's step at t on the wall's residual |a × x|² − r²|a|² (its compensated sum, N8);
-   ra: −r²|a|² as its rounded product, that product's error, and the error of r² and |a|². */
-CYL__INL CYL__L CYL__P(wall_step)(const CYL__P(frame) *f, CYL__L t, const CYL__L ra[3])
+/* The wall's residual F = |a × x|² − r²|a|² at t as its compensated sum (N8), and g = (a × x)·s
+   (F' = 2g); f->ra: −r²|a|² as its rounded product, that product's error, the error of r²|a|². */
+CYL__INL CYL__L CYL__P(resid)(const CYL__P(frame) *f, CYL__L t, CYL__L *gp)
 {
     CYL__L xh[3], xl[3], yh, yl, g = 0;
     CYL__P(acc) q, F = {0, 0};
@@ -807,40 +818,56 @@ CYL__INL CYL__L CYL__P(wall_step)(const CYL__P(frame) *f, CYL__L t, const CYL__L
         yh = CYL__P(acc_pair)(&q, &yl);
         CYL__P(acc_mul)(&F, yh, yh), F.c += 2 * yh * yl, g += yh * f->s[i];
     }
-    CYL__P(acc_add)(&F, ra[0]), F.c += ra[1], F.c -= ra[2];
-    return (F.s + F.c) / (2 * g);
+    CYL__P(acc_add)(&F, f->ra[0]), F.c += f->ra[1], F.c -= f->ra[2];
+    *gp = g;
+    return F.s + F.c;
+}
+
+/* The exact path's terms (N8): |a| as a pair sa, −r²|a|² with its errors, and, off the parallel
+   rule, D from the residual at the closest approach t_c: F(t_c) = −|a|²D/A, good to about u of
+   itself where the plain D errs by u·r²A and more; t_c = −B/A, then one step on g (linear). */
+CYL__COLD void CYL__P(exact_terms)(CYL__P(frame) *f)
+{
+    CYL__L aah, aal, sh, p, r2 = f->r * f->r, F, g;
+    CYL__P(acc) aa = {0, 0};
+    int i;
+    for (i = 0; i < 3; i++) CYL__P(acc_mul)(&aa, f->a[i], f->a[i]);
+    aah = CYL__P(acc_pair)(&aa, &aal);
+    f->sa[0] = sh = CYL__LSQRT(aah), p = sh * sh; /* √(aah + aal) = sh + sl: one Newton step */
+    f->sa[1] = ((aah - p) - CYL__P(prod_err)(sh, sh, p) + aal) / (2 * sh);
+    f->ra[0] = -r2 * aah, f->ra[1] = CYL__P(prod_err)(-r2, aah, f->ra[0]);
+    f->ra[2] = CYL__P(prod_err)(f->r, f->r, r2) * aah + r2 * aal;
+    if (f->par) return;
+    F = CYL__P(resid)(f, f->tc = -f->B / f->A, &g);
+    f->D = -F * (f->A / f->aa), f->tc -= g / f->A;
 }
 
 /* The exact path's slab ends and wall roots, moved to their residuals' roots by Newton's
    method on compensated sums (N8): a cap plane's a·x ± H|a| (linear: one step), the wall's
-   |a × x|² − r²|a|² (at most three steps). A wall root moving by half the roots' gap stays. */
-CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, int wall, CYL__L t[2], CYL__L s[2])
+   |a × x|² − r²|a|² (at most three steps). A wall root moving by half the roots' gap stays; a
+   contact without roots is at the closest approach. */
+CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, CYL__L t[2], CYL__L s[2])
 {
-    CYL__L aah, aal, sh, sl, p, gap = (t[1] - t[0]) / 2, v[2], dt, r2 = f->r * f->r, ra[3];
-    CYL__P(acc) F, aa = {0, 0}, z = {0, 0}, ze = {0, 0};
+    CYL__L gap = (t[1] - t[0]) / 2, v[2], dt, g;
+    CYL__P(acc) F, z = {0, 0}, ze = {0, 0};
     int i, k, it;
-    for (i = 0; i < 3; i++) CYL__P(acc_mul)(&aa, f->a[i], f->a[i]);
-    aah = CYL__P(acc_pair)(&aa, &aal);
-    sh = CYL__LSQRT(aah), p = sh * sh; /* √(aah + aal) = sh + sl: one Newton step */
-    sl = ((aah - p) - CYL__P(prod_err)(sh, sh, p) + aal) / (2 * sh);
-    ra[0] = -r2 * aah, ra[1] = CYL__P(prod_err)(-r2, aah, ra[0]);
-    ra[2] = CYL__P(prod_err)(f->r, f->r, r2) * aah + r2 * aal;
     for (i = 0; i < 3; i++) /* z0 = a·w and ζ = a·d as pairs */
         CYL__P(acc_mul)(&z, f->a[i], f->w[i]), z.c += f->a[i] * f->wl[i],
         CYL__P(acc_mul)(&ze, f->a[i], f->d[i]);
     z.s = CYL__P(acc_pair)(&z, &z.c), ze.s = CYL__P(acc_pair)(&ze, &ze.c);
     for (k = 0; k < 2; k++) { /* s[k] lies on the low plane where k == 0 and ζ > 0 agree */
-        CYL__L H = (k == 0) == (f->zeta > 0) ? f->H : -f->H, Hh = H * sh;
+        CYL__L H = (k == 0) == (f->zeta > 0) ? f->H : -f->H, Hh = H * f->sa[0];
         F = z;
-        CYL__P(acc_add)(&F, Hh), F.c += CYL__P(prod_err)(H, sh, Hh) + H * sl;
+        CYL__P(acc_add)(&F, Hh), F.c += CYL__P(prod_err)(H, f->sa[0], Hh) + H * f->sa[1];
         CYL__P(acc_mul)(&F, s[k], ze.s), F.c += s[k] * ze.c;
         v[k] = s[k] - (F.s + F.c) / f->zeta;
     }
     if (v[0] <= v[1]) s[0] = v[0], s[1] = v[1]; /* ζ = 0 (no ends) gives NaN: s stays */
-    for (k = 0; k < 2 && wall; k++) {
+    if (!f->par && !(f->D > 0)) t[0] = t[1] = f->tc;
+    for (k = 0; k < 2 && !f->par && f->D > 0; k++) {
         v[k] = t[k];
         for (it = 0; it < 3; it++) { /* what a step leaves is about dt²/(2·gap) */
-            v[k] -= dt = CYL__P(wall_step)(f, v[k], ra);
+            v[k] -= dt = CYL__P(resid)(f, v[k], &g) / (2 * g);
             if (!(dt * dt > gap * CYL__LU * CYL__P(abs)(v[k]))) break;
         }
         if (CYL__P(abs)(v[k] - t[k]) < gap) t[k] = v[k];
@@ -915,6 +942,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         if (!CYL__P(derive)(&f)) return CYL_MISS;
     }
     f.par = CYL__P(parallel)(&f) <= 0;
+    if (f.exact) CYL__P(exact_terms)(&f);
     return CYL__P(answer)(&f, opts, want, hits);
 }
 
@@ -1016,6 +1044,10 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        with w exact as a pair and each product's error kept exactly (FMA, or Dekker's split)
        in a compensated sum (Ogita, Rump, Oishi, "Accurate sum and dot product", SIAM J. Sci.
        Comput. 26, 2005): F's error is about u|F| + u²(r²|a|² + |a|²|x|²), so t lands within
-       about an ulp of the root, and the rim and t range decide on it. Not for tangent
-       contacts (F' vanishes), nor for the float API in double (already within 2^-29).
+       about an ulp of the root, and the rim and t range decide on it. The tangent band
+       decides on D from the same residual at the closest approach t_c = −B/A: F(t_c) =
+       −|a|²D/A, and t_c's error ε changes it by only Aε² (F' vanishes there), about
+       u²|a|²|w|², where the plain D errs by u·r²A·|w|/r and more. A contact without roots is
+       at t_c after one step on g = (a × x)·s (linear, g' = A); one with roots is refined as
+       any wall root while the steps stay within half the roots' gap.
 */
