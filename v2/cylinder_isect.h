@@ -58,8 +58,8 @@
    Decisions (hit or miss, part, tangent, rim, t range) are taken with plain comparisons: each
    is right where its margin exceeds the working type's rounding of the quantities it compares
    (N6); nearer than that either answer may come, and t_err still holds for the part reported.
-   CYL_PRECISE takes them on the exact path's compensated values (N8) instead: right wherever
-   the margin exceeds a few ulps of the tangent band's e, of t or of the slab ends.
+   CYL_PRECISE takes them certified (N9) or on the exact path's compensated values (N8): right
+   wherever the margin exceeds a few ulps of the tangent band's e, of t or of the slab ends.
 
    Errors, checked in this order; *hit is never touched on an error:
      CYL_E_NULL (-1) a NULL pointer            CYL_E_RADIUS (-5) r <= 0, NaN or infinite
@@ -71,9 +71,10 @@
      CYL_CAPS          solid capped cylinder instead of the open tube
      CYL_OUTWARD       outward normal instead of the ray-facing one
      CYL_NO_TANGENT    grazing contacts within the tangent tolerance are misses
-     CYL_PRECISE       every call answered by the exact path (N8): decisions and t from
-                       compensated residuals; `make cost` gives its price (issue 29: the
-                       certified hot path that sends only doubtful calls there is to come)
+     CYL_PRECISE       decisions certified: each taken on the hot path only where its
+                       margin exceeds an a-priori bound on its error (N9), else on the exact
+                       path's compensated residuals (N8); the double API's calls all go
+                       there for now (t to an ulp); `make cost` gives the price
      CYL_NO_NORMAL     skip the normal: hit.n = {0, 0, 0}
      CYL_NO_ERRBOUND   skip the bound: hit.t_err = +INFINITY
      CYL_TRUSTED       accepted, changes nothing: the hot path validates nothing (one range
@@ -107,8 +108,8 @@
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
    t_err held the exact t on all 510,492 float and 521,187 double hits; nothing misclassified
    beyond the band, default or CYL_PRECISE. t on well-conditioned hits: CYL_PRECISE within
-   0.5 ulps in every family, both APIs, at 19 times the end-point routine's instructions
-   (REPORT's headline; `make cost`: 25 times at -O2). Default: float within 0.5 ulps; double
+   0.5 ulps in every family, both APIs (its cost: `make cost`, REPORT's headline).
+   Default: float within 0.5 ulps; double
    within 0.5 on the tiny family, which the exact path answers (N8), and on the hot path within
    7 ulps on the well family's walls, 14.4 on its caps, 35.9 on the huge family's caps
    (cancellation of z0 + Ha, N6), 271 for origins far along the axis (thin): short of the
@@ -384,6 +385,9 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__COLD_LO 1.32348898e-23f /* 2^-76 */
 #endif
 #define CYL__LINF (CYL__LMAX * 2)
+/* The certified layer runs (N9); what answer returns when it is not sure. */
+#define CYL__CERT(f, opts) (sizeof(CYL__L) > sizeof(CYL__R) && ((opts) & CYL_PRECISE) && !(f)->cold)
+#define CYL__DOUBT (-100)
 
 typedef struct CYL__N(ray) { CYL__R o[3], d[3], tmin, tmax; } CYL__N(ray);
 typedef struct CYL__N(cylinder) { CYL__R c[3], a[3], r, h; } CYL__N(cylinder);
@@ -399,7 +403,7 @@ typedef struct CYL__P(frame) {
 } CYL__P(frame);
 
 /* One crossing of the ray with the surface; h: ∓√(|a|²D) at a wall (entry −, exit +). */
-typedef struct CYL__P(cross) { CYL__L t, h; int part, ok; unsigned flags; } CYL__P(cross);
+typedef struct CYL__P(cross) { CYL__L t, h; int part, ok, doubt; unsigned flags; } CYL__P(cross);
 
 static int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                         int want, CYL__N(hit) *hits);
@@ -497,9 +501,11 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
     ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
     f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
-    if (!ok || !(f.tmin <= f.tmax) || (opts & (CYL_PRECISE | ~CYL__SUPPORTED)) != 0u)
+    if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u ||
+        ((opts & CYL_PRECISE) && !CYL__CERT(&f, opts))) /* the double API's: t to an ulp */
         return CYL__P(cold)(ray, cyl, opts, want, hits);
-    return CYL__P(answer)(&f, opts, want, hits);
+    ok = CYL__P(answer)(&f, opts, want, hits);
+    return CYL__CERT(&f, opts) && ok == CYL__DOUBT ? CYL__P(cold)(ray, cyl, opts, want, hits) : ok;
 }
 
 CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
@@ -604,6 +610,10 @@ CYL__INL void CYL__P(slab)(const CYL__P(frame) *f, CYL__L s[2])
 /* The rim: is t inside the slab, ends included? */
 CYL__INL int CYL__P(in_slab)(CYL__L t, const CYL__L s[2]) { return !(t < s[0]) && !(t > s[1]); }
 
+/* The certified layer's test of one comparison (N9): x and y within their bounds' sum. */
+CYL__INL int CYL__P(near)(CYL__L x, CYL__L ex, CYL__L y, CYL__L ey)
+{ return CYL__P(abs)(x - y) <= ex + ey; }
+
 /* The t range, ends included, and t representable in R (the double API's hot path's t is). */
 CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t)
 {
@@ -613,19 +623,24 @@ CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t)
 
 /* Crossing k (0 entry, 1 exit) of the wall roots t and the slab s (N4): the open tube keeps a
    wall crossing inside the slab; the capped solid clips the wall interval with the slab (entry
-   and exit the wall or a cap; a rim point is the wall). ok: it exists, in the t range. */
+   and exit the wall or a cap; a rim point is the wall). ok: it exists, in the t range. e: the
+   certified layer's bounds on t[0], t[1], s[0], s[1] (N9); doubt: a comparison within them. */
 CYL__INL CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, int k,
-                                        const CYL__L t[2], const CYL__L s[2], CYL__L sq,
-                                        unsigned tan)
+                                        const CYL__L t[2], const CYL__L s[2], const CYL__L *e,
+                                        CYL__L sq, unsigned tan)
 {
     CYL__P(cross) x;
+    CYL__L ex = e ? e[k] : 0;
     x.t = t[k], x.h = k ? sq : -sq, x.part = CYL_SIDE, x.flags = (k ? CYL_F_INSIDE : 0u) | tan;
     x.ok = CYL__P(in_slab)(x.t, s);
+    x.doubt = e && (CYL__P(near)(t[k], ex, s[0], e[2]) || CYL__P(near)(t[k], ex, s[1], e[3]));
     if (!x.ok && (opts & CYL_CAPS) &&
         (k ? t[1] > s[1] && !(s[1] < t[0]) : t[0] < s[0] && !(s[0] > t[1]))) {
         x.t = s[k], x.ok = 1, x.flags &= ~CYL_F_TANGENT;
         x.part = (k == 0) == !(f->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH;
+        if (e) ex = e[2 + k], x.doubt |= CYL__P(near)(s[k], ex, t[1 - k], e[1 - k]);
     }
+    if (e && x.ok) x.doubt |= CYL__P(near)(x.t, ex, f->tmin, 0) || CYL__P(near)(x.t, ex, f->tmax, 0);
     if (f->par) { /* a parallel ray's cap crossing counts where its point is inside the disk */
         CYL__L y[3];
         CYL__P(lin)(1, f->m, x.t, f->s, y);
@@ -734,27 +749,62 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsig
     hit->part = x->part, hit->flags = x->flags;
 }
 
-/* The crossings in t order, each emitted as found; occluded and intersect stop at the first. */
+/* ------------------------------------------------------------------ certificates */
+/* The certified layer (CYL_PRECISE where the float API computes in double, N9): the plain
+   quadratic's error at t is at most noise·(S + t²|a|²|d|²), S = |a|²(|w|² + r²). */
+CYL__INL CYL__L CYL__P(noise)(const CYL__P(frame) *f)
+{ return 128 * CYL__LU * (1 + CYL__LSQRT(f->ad / f->A)); }
+
+/* The tangent band: 1 unless D lies beyond the band's edges by more than its bound (a contact
+   inside the band is the exact path's: its roots move by u/√e). */
+CYL__INL int CYL__P(band_doubt)(const CYL__P(frame) *f)
+{
+    CYL__L band = (CYL__L)CYL__TANG * (f->r2 * f->A);
+    CYL__L eD = CYL__P(noise)(f) * (f->aww + f->r2aa) * (f->A / f->aa);
+    return !(f->D - band > eD) && !(f->D + band < -eD);
+}
+
+/* Bounds e on the wall roots t and the slab ends s (N9); 1 where a root's is not first order. */
+CYL__INL int CYL__P(bounds)(const CYL__P(frame) *f, const CYL__L t[2], const CYL__L s[2],
+                            CYL__L sq, CYL__L e[4])
+{
+    const CYL__L u = CYL__LU, k = CYL__P(noise)(f), S = f->aww + f->r2aa, z = CYL__P(abs)(f->zeta);
+    const CYL__L es = 64 * u * (CYL__LSQRT(f->aww) + f->Ha) / z, ed = 64 * u * CYL__LSQRT(f->ad) / z;
+    CYL__L df0 = k * (S + t[0] * t[0] * f->ad), df1 = k * (S + t[1] * t[1] * f->ad);
+    e[0] = df0 / sq + 4 * u * CYL__P(abs)(t[0]), e[1] = df1 / sq + 4 * u * CYL__P(abs)(t[1]);
+    e[2] = CYL__P(abs)(s[0]) <= CYL__LMAX ? es + CYL__P(abs)(s[0]) * (ed + 2 * u) : 0;
+    e[3] = CYL__P(abs)(s[1]) <= CYL__LMAX ? es + CYL__P(abs)(s[1]) * (ed + 2 * u) : 0;
+    return !(CYL__P(max)(df0, df1) * f->A <= sq * sq);
+}
+
+/* The crossings in t order; occluded and intersect stop at the first, and nothing is emitted
+   before every decision it depends on is certain (CYL_PRECISE: else CYL__DOUBT, N9). */
 CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits)
 {
-    CYL__L t[2], s[2], sq = 0;
-    CYL__P(cross) x;
+    CYL__L t[2], s[2], sq = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : 0;
+    CYL__P(cross) x, y;
     int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0;
     unsigned tan = kind == 1 ? CYL_F_TANGENT : 0u;
+    if (e && CYL__P(band_doubt)(f)) return CYL__DOUBT;
     if (kind == 0 || (tan && (opts & CYL_NO_TANGENT))) return 0;
     if (!f->par) sq = CYL__P(wall_roots)(f, t);
     else t[0] = -CYL__LINF, t[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
     CYL__P(slab)(f, s);
     if (f->cold && f->exact) CYL__P(refine)(f, t, s); /* the exact path's t (N8) */
-    x = CYL__P(crossing)(f, opts, 0, t, s, sq, tan); /* entry, then exit: no loop, so that */
-    if (x.ok) {                                       /* k and the arrays fold away */
-        if (want == 0) return 1;
-        CYL__P(emit)(f, &x, opts, &hits[n++]);
-        if (want == 1) return 1;
+    if (e && CYL__P(bounds)(f, t, s, sq, e)) return CYL__DOUBT;
+    x = CYL__P(crossing)(f, opts, 0, t, s, e, sq, tan); /* entry, then exit: no loop, so */
+    if (e) { /* both certain, whatever the entry point: */ /* that k and the arrays fold away */
+        y = CYL__P(crossing)(f, opts, 1, t, s, e, sq, tan); /* each answers on one path */
+        if (x.doubt || y.doubt) return CYL__DOUBT;
     }
-    x = CYL__P(crossing)(f, opts, 1, t, s, sq, tan);
-    if (x.ok && want != 0) CYL__P(emit)(f, &x, opts, &hits[n]);
-    return n + x.ok;
+    if (x.ok && want < 2) {
+        if (want) CYL__P(emit)(f, &x, opts, hits);
+        return 1;
+    }
+    if (!e) y = CYL__P(crossing)(f, opts, 1, t, s, e, sq, tan);
+    if (x.ok) CYL__P(emit)(f, &x, opts, &hits[n++]);
+    if (y.ok && want) CYL__P(emit)(f, &y, opts, &hits[n]);
+    return n + y.ok;
 }
 
 /* ------------------------------------------------------------------ the exact path */
@@ -981,6 +1031,8 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__K
 #undef CYL__LTINY
 #undef CYL__LINF
+#undef CYL__CERT
+#undef CYL__DOUBT
 #undef CYL__TANG
 #undef CYL__PARA
 #undef CYL__UINT
@@ -1050,4 +1102,16 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        u²|a|²|w|², where the plain D errs by u·r²A·|w|/r and more. A contact without roots is
        at t_c after one step on g = (a × x)·s (linear, g' = A); one with roots is refined as
        any wall root while the steps stay within half the roots' gap.
+   N9. The certified layer (CYL_PRECISE where the float API computes in double): each
+       comparison an answer depends on (tangent band, rims, t range, entry and exit, for
+       both crossings whatever the entry point) is taken only where its operands lie farther
+       apart than their bounds' sum; else the exact path answers. The bounds are a priori,
+       from magnitudes the hot path has: s and m carry about u|a||d| and u|a||w| (w's own
+       rounding included), so A, B, C, D, and the quadratic each root solves (the root pair
+       uses √(|a|²D), not B² − AC), err at t by at most k(S + t²|a|²|d|²), S = |a|²(|w|² +
+       r²), k = 128u(1 + |a||d|/|s|) (the last term: P's and that identity's error through
+       s). A root moves by that over √(|a|²D) (|f'|/2), plus 4u|t| for the formula, while it
+       stays below |a|²D/A (first order; else the exact path); D by k·S·A/|a|²; a slab end by
+       64u(|a||w| + Ha + |t||a||d|)/|ζ| + 2u|t|. A contact inside the band goes there too:
+       its roots move by u/√e.
 */
