@@ -73,8 +73,8 @@
      CYL_NO_TANGENT    grazing contacts within the tangent tolerance are misses
      CYL_PRECISE       decisions certified: each taken on the hot path only where its
                        margin exceeds an a-priori bound on its error (N9), else on the exact
-                       path's compensated residuals (N8); the double API's calls all go
-                       there for now (t to an ulp); `make cost` gives the price
+                       path's compensated residuals (N8); the double API's t then takes
+                       N8's compensated Newton step; `make cost` gives the price
      CYL_NO_NORMAL     skip the normal: hit.n = {0, 0, 0}
      CYL_NO_ERRBOUND   skip the bound: hit.t_err = +INFINITY
      CYL_TRUSTED       accepted, changes nothing: the hot path validates nothing (one range
@@ -108,12 +108,12 @@
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
    t_err held the exact t on all 510,492 float and 521,187 double hits; nothing misclassified
    beyond the band, default or CYL_PRECISE. t on well-conditioned hits: CYL_PRECISE within
-   0.5 ulps in every family, both APIs (its cost: `make cost`, REPORT's headline).
-   Default: float within 0.5 ulps; double
-   within 0.5 on the tiny family, which the exact path answers (N8), and on the hot path within
-   7 ulps on the well family's walls, 14.4 on its caps, 35.9 on the huge family's caps
-   (cancellation of z0 + Ha, N6), 271 for origins far along the axis (thin): short of the
-   4 ulps aimed at, a plain tier's limit.
+   0.5 ulps in every family, both APIs, at 445 (float) and 787 (double) instructions per
+   capped call, 3.7 and 6.7 times the end-point routine's (REPORT's headline; `make cost`).
+   Default: float within 0.5 ulps; double within 0.5 on the tiny family, which the exact path
+   answers (N8), and on the hot path within 7 ulps on the well family's walls, 14.4 on its
+   caps, 35.9 on the huge family's caps (cancellation of z0 + Ha, N6), 271 for origins far
+   along the axis (thin): short of the 4 ulps aimed at, a plain tier's limit.
    Per unit of the data's condition κ (o − c, d, a, r, h each moved by a relative u move t by
    κ·u·|t|; REPORT's ulps/κ) double errs by at most 1.8 on those families, 2.7 on all.
 
@@ -158,8 +158,10 @@
 #endif
 #if defined(__GNUC__) || defined(__clang__)
 #define CYL__COLD static __attribute__((noinline, cold, unused))
+#define CYL__OUT static __attribute__((noinline, unused))
 #else
 #define CYL__COLD static
+#define CYL__OUT static
 #endif
 #ifndef CYL_HEADER_FILENAME
 #define CYL_HEADER_FILENAME "cylinder_isect.h"
@@ -386,8 +388,10 @@ CYL_DEF const char *cyl_strerror(int code)
 #endif
 #define CYL__LINF (CYL__LMAX * 2)
 /* The certified layer runs (N9); what answer returns when it is not sure. */
-#define CYL__CERT(f, opts) (sizeof(CYL__L) > sizeof(CYL__R) && ((opts) & CYL_PRECISE) && !(f)->cold)
+#define CYL__CERT(f, opts) (((opts) & CYL_PRECISE) && !(f)->cold)
 #define CYL__DOUBT (-100)
+/* Which cap plane slab end k lies on (a macro: gcc 12 folded the inline function less well). */
+#define CYL__CAP_PART(f, k) (((k) == 0) == !((f)->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH)
 
 typedef struct CYL__N(ray) { CYL__R o[3], d[3], tmin, tmax; } CYL__N(ray);
 typedef struct CYL__N(cylinder) { CYL__R c[3], a[3], r, h; } CYL__N(cylinder);
@@ -398,7 +402,7 @@ typedef struct CYL__N(hit) { CYL__R t, t_err, n[3], v; int part; unsigned flags;
 typedef struct CYL__P(frame) {
     CYL__L w[3], wl[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, tlim, vlim, lo;
     CYL__L s[3], m[3], aa, ad, mm, aww, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha;
-    CYL__L sa[2], ra[3], tc; /* the exact path's |a| and −r²|a|² as pairs, closest approach */
+    CYL__L tc; /* the exact path's closest approach */
     int et, ev, exact, cold, par; /* cold: the exact path's (FMA products, unscaled output) */
 } CYL__P(frame);
 
@@ -408,6 +412,7 @@ typedef struct CYL__P(cross) { CYL__L t, h; int part, ok, doubt; unsigned flags;
 static int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                         int want, CYL__N(hit) *hits);
 static void CYL__P(refine)(const CYL__P(frame) *f, CYL__L t[2], CYL__L s[2]);
+static CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap);
 
 /* ------------------------------------------------------------------ small tools */
 CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return CYL__LABS(x); }
@@ -427,6 +432,12 @@ CYL__INL void CYL__P(lin)(CYL__L p, const CYL__L x[3], CYL__L q, const CYL__L y[
     z[0] = x[0] * p + y[0] * q;
     z[1] = x[1] * p + y[1] * q;
     z[2] = x[2] * p + y[2] * q;
+}
+/* x + y − s for s = x + y rounded, exactly (Knuth's TwoSum). */
+CYL__INL CYL__L CYL__P(sum_err)(CYL__L x, CYL__L y, CYL__L s)
+{
+    CYL__L z = s - x;
+    return (x - (s - z)) + (y - z);
 }
 CYL__INL void CYL__P(mul3)(CYL__L p, const CYL__L x[3], CYL__L z[3])
 { z[0] = x[0] * p, z[1] = x[1] * p, z[2] = x[2] * p; }
@@ -499,10 +510,13 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.r = (CYL__L)cyl->r, f.H = (CYL__L)cyl->h * CYL__K(0.5);
     f.tlim = (CYL__L)CYL__RMAX, f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX), f.lo = CYL__HOT_LO;
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
+    if (CYL__CERT(&f, opts) && sizeof(CYL__L) == sizeof(CYL__R)) { /* w exact, for polish */
+        int i;
+        for (i = 0; i < 3; i++) f.wl[i] = CYL__P(sum_err)((CYL__L)ray->o[i], -(CYL__L)cyl->c[i], f.w[i]);
+    }
     ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
     f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
-    if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u ||
-        ((opts & CYL_PRECISE) && !CYL__CERT(&f, opts))) /* the double API's: t to an ulp */
+    if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u)
         return CYL__P(cold)(ray, cyl, opts, want, hits);
     ok = CYL__P(answer)(&f, opts, want, hits);
     return CYL__CERT(&f, opts) && ok == CYL__DOUBT ? CYL__P(cold)(ray, cyl, opts, want, hits) : ok;
@@ -637,7 +651,7 @@ CYL__INL CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, i
     if (!x.ok && (opts & CYL_CAPS) &&
         (k ? t[1] > s[1] && !(s[1] < t[0]) : t[0] < s[0] && !(s[0] > t[1]))) {
         x.t = s[k], x.ok = 1, x.flags &= ~CYL_F_TANGENT;
-        x.part = (k == 0) == !(f->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH;
+        x.part = CYL__CAP_PART(f, k);
         if (e) ex = e[2 + k], x.doubt |= CYL__P(near)(s[k], ex, t[1 - k], e[1 - k]);
     }
     if (e && x.ok) x.doubt |= CYL__P(near)(x.t, ex, f->tmin, 0) || CYL__P(near)(x.t, ex, f->tmax, 0);
@@ -750,8 +764,8 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsig
 }
 
 /* ------------------------------------------------------------------ certificates */
-/* The certified layer (CYL_PRECISE where the float API computes in double, N9): the plain
-   quadratic's error at t is at most noise·(S + t²|a|²|d|²), S = |a|²(|w|² + r²). */
+/* The certified layer (CYL_PRECISE on the hot path, N9): the plain quadratic's error at t is
+   at most noise·(S + t²|a|²|d|²), S = |a|²(|w|² + r²). */
 CYL__INL CYL__L CYL__P(noise)(const CYL__P(frame) *f)
 { return 128 * CYL__LU * (1 + CYL__LSQRT(f->ad / f->A)); }
 
@@ -783,7 +797,7 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
 {
     CYL__L t[2], s[2], sq = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : 0;
     CYL__P(cross) x, y;
-    int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0;
+    int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0, pol;
     unsigned tan = kind == 1 ? CYL_F_TANGENT : 0u;
     if (e && CYL__P(band_doubt)(f)) return CYL__DOUBT;
     if (kind == 0 || (tan && (opts & CYL_NO_TANGENT))) return 0;
@@ -791,11 +805,16 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
     else t[0] = -CYL__LINF, t[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
     CYL__P(slab)(f, s);
     if (f->cold && f->exact) CYL__P(refine)(f, t, s); /* the exact path's t (N8) */
+    pol = e && sizeof(CYL__L) == sizeof(CYL__R) && want; /* the double API's t to an ulp */
     if (e && CYL__P(bounds)(f, t, s, sq, e)) return CYL__DOUBT;
     x = CYL__P(crossing)(f, opts, 0, t, s, e, sq, tan); /* entry, then exit: no loop, so */
     if (e) { /* both certain, whatever the entry point: */ /* that k and the arrays fold away */
         y = CYL__P(crossing)(f, opts, 1, t, s, e, sq, tan); /* each answers on one path */
         if (x.doubt || y.doubt) return CYL__DOUBT;
+        if (pol) { /* each crossing emitted moved onto its residual's root */
+            if (x.ok) x.t = CYL__P(polish)(f, x.t, x.part, sq / f->A);
+            if (y.ok && !(x.ok && want < 2)) y.t = CYL__P(polish)(f, y.t, y.part, sq / f->A);
+        }
     }
     if (x.ok && want < 2) {
         if (want) CYL__P(emit)(f, &x, opts, hits);
@@ -824,8 +843,8 @@ CYL__INL CYL__L CYL__P(prod_err)(CYL__L x, CYL__L y, CYL__L p)
 typedef struct CYL__P(acc) { CYL__L s, c; } CYL__P(acc);
 CYL__INL void CYL__P(acc_add)(CYL__P(acc) *q, CYL__L x)
 {
-    CYL__L s = q->s + x, z = s - q->s;
-    q->c += (q->s - (s - z)) + (x - z), q->s = s;
+    CYL__L s = q->s + x;
+    q->c += CYL__P(sum_err)(q->s, x, s), q->s = s;
 }
 CYL__INL void CYL__P(acc_mul)(CYL__P(acc) *q, CYL__L x, CYL__L y)
 {
@@ -852,9 +871,24 @@ CYL__INL void CYL__P(point)(const CYL__P(frame) *f, CYL__L t, CYL__L xh[3], CYL_
     }
 }
 
+/* |a| as a pair sa (√ of |a|²'s compensated sum, one Newton step) and −r²|a|² as ra: its
+   rounded product, that product's error, the error of r²|a|² (N8). */
+CYL__INL void CYL__P(norm_a)(const CYL__P(frame) *f, CYL__L sa[2], CYL__L ra[3])
+{
+    CYL__L aah, aal, p, r2 = f->r * f->r;
+    CYL__P(acc) aa = {0, 0};
+    int i;
+    for (i = 0; i < 3; i++) CYL__P(acc_mul)(&aa, f->a[i], f->a[i]);
+    aah = CYL__P(acc_pair)(&aa, &aal);
+    sa[0] = CYL__LSQRT(aah), p = sa[0] * sa[0];
+    sa[1] = ((aah - p) - CYL__P(prod_err)(sa[0], sa[0], p) + aal) / (2 * sa[0]);
+    ra[0] = -r2 * aah, ra[1] = CYL__P(prod_err)(-r2, aah, ra[0]);
+    ra[2] = CYL__P(prod_err)(f->r, f->r, r2) * aah + r2 * aal;
+}
+
 /* The wall's residual F = |a × x|² − r²|a|² at t as its compensated sum (N8), and g = (a × x)·s
-   (F' = 2g); f->ra: −r²|a|² as its rounded product, that product's error, the error of r²|a|². */
-CYL__INL CYL__L CYL__P(resid)(const CYL__P(frame) *f, CYL__L t, CYL__L *gp)
+   (F' = 2g). */
+CYL__INL CYL__L CYL__P(resid)(const CYL__P(frame) *f, const CYL__L ra[3], CYL__L t, CYL__L *gp)
 {
     CYL__L xh[3], xl[3], yh, yl, g = 0;
     CYL__P(acc) q, F = {0, 0};
@@ -868,60 +902,59 @@ CYL__INL CYL__L CYL__P(resid)(const CYL__P(frame) *f, CYL__L t, CYL__L *gp)
         yh = CYL__P(acc_pair)(&q, &yl);
         CYL__P(acc_mul)(&F, yh, yh), F.c += 2 * yh * yl, g += yh * f->s[i];
     }
-    CYL__P(acc_add)(&F, f->ra[0]), F.c += f->ra[1], F.c -= f->ra[2];
+    CYL__P(acc_add)(&F, ra[0]), F.c += ra[1], F.c -= ra[2];
     *gp = g;
     return F.s + F.c;
 }
 
-/* The exact path's terms (N8): |a| as a pair sa, −r²|a|² with its errors, and, off the parallel
-   rule, D from the residual at the closest approach t_c: F(t_c) = −|a|²D/A, good to about u of
-   itself where the plain D errs by u·r²A and more; t_c = −B/A, then one step on g (linear). */
-CYL__COLD void CYL__P(exact_terms)(CYL__P(frame) *f)
+/* The exact path's tangent band (N8): off the parallel rule, D from the residual at the
+   closest approach t_c: F(t_c) = −|a|²D/A, good to about u of itself where the plain D errs
+   by u·r²A and more; t_c = −B/A, then one step on g (linear). */
+CYL__COLD void CYL__P(exact_band)(CYL__P(frame) *f)
 {
-    CYL__L aah, aal, sh, p, r2 = f->r * f->r, F, g;
-    CYL__P(acc) aa = {0, 0};
-    int i;
-    for (i = 0; i < 3; i++) CYL__P(acc_mul)(&aa, f->a[i], f->a[i]);
-    aah = CYL__P(acc_pair)(&aa, &aal);
-    f->sa[0] = sh = CYL__LSQRT(aah), p = sh * sh; /* √(aah + aal) = sh + sl: one Newton step */
-    f->sa[1] = ((aah - p) - CYL__P(prod_err)(sh, sh, p) + aal) / (2 * sh);
-    f->ra[0] = -r2 * aah, f->ra[1] = CYL__P(prod_err)(-r2, aah, f->ra[0]);
-    f->ra[2] = CYL__P(prod_err)(f->r, f->r, r2) * aah + r2 * aal;
+    CYL__L sa[2], ra[3], F, g;
     if (f->par) return;
-    F = CYL__P(resid)(f, f->tc = -f->B / f->A, &g);
+    CYL__P(norm_a)(f, sa, ra);
+    F = CYL__P(resid)(f, ra, f->tc = -f->B / f->A, &g);
     f->D = -F * (f->A / f->aa), f->tc -= g / f->A;
 }
 
-/* The exact path's slab ends and wall roots, moved to their residuals' roots by Newton's
-   method on compensated sums (N8): a cap plane's a·x ± H|a| (linear: one step), the wall's
-   |a × x|² − r²|a|² (at most three steps). A wall root moving by half the roots' gap stays; a
-   contact without roots is at the closest approach. */
+/* t moved onto its residual's root by Newton's method on compensated sums (N8): a cap plane's
+   a·x ± H|a| (part LOW or HIGH; linear: one step), the wall's |a × x|² − r²|a|² (at most three
+   steps, what a step leaves being about dt²/(2·gap); kept if it moved less than gap, half the
+   roots' distance). */
+CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap)
+{
+    CYL__L v = t, dt, g, sa[2], ra[3], H, Hh;
+    CYL__P(acc) F = {0, 0};
+    int it, i;
+    CYL__P(norm_a)(f, sa, ra);
+    if (part != CYL_SIDE) { /* a·x + H|a| on the low plane, x = w + t·d */
+        H = part == CYL_CAP_LOW ? f->H : -f->H, Hh = H * sa[0];
+        for (i = 0; i < 3; i++)
+            CYL__P(acc_mul)(&F, f->a[i], f->w[i]), CYL__P(acc_mul)(&F, t * f->a[i], f->d[i]),
+            F.c += f->a[i] * f->wl[i] + CYL__P(prod_err)(t, f->a[i], t * f->a[i]) * f->d[i];
+        CYL__P(acc_add)(&F, Hh), F.c += CYL__P(prod_err)(H, sa[0], Hh) + H * sa[1];
+        v = t - (F.s + F.c) / f->zeta;
+        return CYL__P(abs)(v) <= CYL__LMAX ? v : t; /* ζ = 0 (no ends): t stays */
+    }
+    for (it = 0; it < 3; it++) {
+        v -= dt = CYL__P(resid)(f, ra, v, &g) / (2 * g);
+        if (!(dt * dt > gap * CYL__LU * CYL__P(abs)(v))) break;
+    }
+    return CYL__P(abs)(v - t) < gap ? v : t;
+}
+
+/* The exact path's slab ends and wall roots on their residuals' roots (N8); a contact without
+   roots is at the closest approach. */
 CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, CYL__L t[2], CYL__L s[2])
 {
-    CYL__L gap = (t[1] - t[0]) / 2, v[2], dt, g;
-    CYL__P(acc) F, z = {0, 0}, ze = {0, 0};
-    int i, k, it;
-    for (i = 0; i < 3; i++) /* z0 = a·w and ζ = a·d as pairs */
-        CYL__P(acc_mul)(&z, f->a[i], f->w[i]), z.c += f->a[i] * f->wl[i],
-        CYL__P(acc_mul)(&ze, f->a[i], f->d[i]);
-    z.s = CYL__P(acc_pair)(&z, &z.c), ze.s = CYL__P(acc_pair)(&ze, &ze.c);
-    for (k = 0; k < 2; k++) { /* s[k] lies on the low plane where k == 0 and ζ > 0 agree */
-        CYL__L H = (k == 0) == (f->zeta > 0) ? f->H : -f->H, Hh = H * f->sa[0];
-        F = z;
-        CYL__P(acc_add)(&F, Hh), F.c += CYL__P(prod_err)(H, f->sa[0], Hh) + H * f->sa[1];
-        CYL__P(acc_mul)(&F, s[k], ze.s), F.c += s[k] * ze.c;
-        v[k] = s[k] - (F.s + F.c) / f->zeta;
-    }
-    if (v[0] <= v[1]) s[0] = v[0], s[1] = v[1]; /* ζ = 0 (no ends) gives NaN: s stays */
-    if (!f->par && !(f->D > 0)) t[0] = t[1] = f->tc;
-    for (k = 0; k < 2 && !f->par && f->D > 0; k++) {
-        v[k] = t[k];
-        for (it = 0; it < 3; it++) { /* what a step leaves is about dt²/(2·gap) */
-            v[k] -= dt = CYL__P(resid)(f, v[k], &g) / (2 * g);
-            if (!(dt * dt > gap * CYL__LU * CYL__P(abs)(v[k]))) break;
-        }
-        if (CYL__P(abs)(v[k] - t[k]) < gap) t[k] = v[k];
-    }
+    CYL__L lo = CYL__P(polish)(f, s[0], CYL__CAP_PART(f, 0), 0);
+    CYL__L hi = CYL__P(polish)(f, s[1], CYL__CAP_PART(f, 1), 0), gap = (t[1] - t[0]) / 2;
+    if (lo <= hi) s[0] = lo, s[1] = hi;
+    if (f->par) return;
+    if (!(f->D > 0)) t[0] = t[1] = f->tc;
+    else t[0] = CYL__P(polish)(f, t[0], CYL_SIDE, gap), t[1] = CYL__P(polish)(f, t[1], CYL_SIDE, gap);
 }
 
 /* Validation in the documented order (the hot path sent what its range test refused). */
@@ -951,10 +984,9 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     int j = 0, kl, kd, ka, i;
     for (i = 0; i < 3; i++) /* halved (exact) only where o − c overflows: small parts stay */
         if (!(CYL__P(abs)((CYL__L)ray->o[i] - (CYL__L)cyl->c[i]) <= CYL__LMAX)) j = 1;
-    for (i = 0; i < 3; i++) { /* o − c = wr + f->wl exactly (TwoSum; Knuth) */
+    for (i = 0; i < 3; i++) { /* o − c = wr + f->wl exactly */
         CYL__L x = CYL__LT(scale)((CYL__L)ray->o[i], -j), y = -CYL__LT(scale)((CYL__L)cyl->c[i], -j);
-        CYL__L z = (wr[i] = x + y) - x;
-        f->wl[i] = (x - (wr[i] - z)) + (y - z);
+        f->wl[i] = CYL__P(sum_err)(x, y, wr[i] = x + y);
     }
     for (i = 0; i < 3; i++) f->d[i] = (CYL__L)ray->d[i], f->a[i] = (CYL__L)cyl->a[i];
     m = CYL__P(max)(CYL__P(amax)(wr), CYL__LT(scale)((CYL__L)cyl->r, -j));
@@ -992,7 +1024,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         if (!CYL__P(derive)(&f)) return CYL_MISS;
     }
     f.par = CYL__P(parallel)(&f) <= 0;
-    if (f.exact) CYL__P(exact_terms)(&f);
+    if (f.exact) CYL__P(exact_band)(&f);
     return CYL__P(answer)(&f, opts, want, hits);
 }
 
@@ -1033,6 +1065,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__LINF
 #undef CYL__CERT
 #undef CYL__DOUBT
+#undef CYL__CAP_PART
 #undef CYL__TANG
 #undef CYL__PARA
 #undef CYL__UINT
@@ -1102,7 +1135,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        u²|a|²|w|², where the plain D errs by u·r²A·|w|/r and more. A contact without roots is
        at t_c after one step on g = (a × x)·s (linear, g' = A); one with roots is refined as
        any wall root while the steps stay within half the roots' gap.
-   N9. The certified layer (CYL_PRECISE where the float API computes in double): each
+   N9. The certified layer (CYL_PRECISE on the hot path): each
        comparison an answer depends on (tangent band, rims, t range, entry and exit, for
        both crossings whatever the entry point) is taken only where its operands lie farther
        apart than their bounds' sum; else the exact path answers. The bounds are a priori,
@@ -1113,5 +1146,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        s). A root moves by that over √(|a|²D) (|f'|/2), plus 4u|t| for the formula, while it
        stays below |a|²D/A (first order; else the exact path); D by k·S·A/|a|²; a slab end by
        64u(|a||w| + Ha + |t||a||d|)/|ζ| + 2u|t|. A contact inside the band goes there too:
-       its roots move by u/√e.
+       its roots move by u/√e. Each crossing the double API then emits takes N8's step
+       (polish): its t errs by up to 36 ulps on the hot path, the tier promises 2; the float
+       API's, computed in double, is within 2^-29 of the root already.
 */
