@@ -31,7 +31,7 @@
 #endif
 
 /* Target 3 needs CYL_PRECISE, absent where the header defines CYL_NO_PRECISE (v2 with
-   CYL_FLOAT_WIDE=0): its tests are then ignored (counted as skipped by make test), and only
+   CYL_NO_DOUBLE): its tests are then ignored (counted as skipped by make test), and only
    then. */
 #ifdef CYL_NO_PRECISE
 #define HAVE_PRECISE 0

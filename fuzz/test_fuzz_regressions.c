@@ -24,9 +24,9 @@ static void regress_fail(const char *msg);
 #define OPEN 1
 #define FIXED 0
 
-/* Without the precise tier (the header defines CYL_NO_PRECISE; v2 does where the float API
- * computes in float) option sets with CYL_PRECISE are left out of the loops below, and a test
- * that needs it is ignored. */
+/* Without the precise tier (the header defines CYL_NO_PRECISE; v2 does with CYL_NO_DOUBLE)
+ * option sets with CYL_PRECISE are left out of the loops below, and a test that needs it is
+ * ignored. */
 #define NO_PRECISE_SET(opts) (!fz_precise_available() && ((opts) & CYL_PRECISE) != 0u)
 /* v2's default tier takes every decision with plain comparisons, right where its margin
  * exceeds the plain rounding; a finding whose margin is below that (a flat disk's rim seen

@@ -86,9 +86,8 @@
      macro                 default                      effect
      CYL_NO_FLOAT          undefined                    leave out cylf_* (and its code)
      CYL_NO_DOUBLE         undefined                    leave out cyld_*: no double anywhere
-     CYL_NO_PRECISE        undefined; defined where     compile out CYL_PRECISE (the bit then
-                           the float API computes in    returns CYL_E_OPTION)
-                           float (CYL_FLOAT_WIDE 0)
+     CYL_NO_PRECISE        undefined; defined with      compile out CYL_PRECISE (the bit then
+                           CYL_NO_DOUBLE                returns CYL_E_OPTION)
      CYL_DEF               static inline (forced, gcc   qualifier of every public function;
                            and clang unless -Os)        `static inline` lets calls share code
      CYL_SQRTF, CYL_SQRT   the instruction (x86-64,     square roots
@@ -278,8 +277,8 @@ static inline double cyl__sqrt(double x) { CYL__ROOT(x, "sd", "d"); return x; }
 #if CYL_FLOAT_WIDE && defined(CYL_NO_DOUBLE)
 #error "cylinder_isect.h: CYL_FLOAT_WIDE computes in double, which CYL_NO_DOUBLE excludes"
 #endif
-/* CYL_PRECISE's exact path needs the float API in double (for now). */
-#if !CYL_FLOAT_WIDE && !defined(CYL_NO_FLOAT) && !defined(CYL_NO_PRECISE)
+/* CYL_PRECISE's certified layer and exact path work in double (N9). */
+#if defined(CYL_NO_DOUBLE) && !defined(CYL_NO_PRECISE)
 #define CYL_NO_PRECISE
 #endif
 #ifdef CYL_NO_PRECISE
@@ -333,7 +332,24 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__UINT uint32_t
 #define CYL__MANT 24
 #define CYL__EBIAS 127
+#if !CYL_FLOAT_WIDE && !defined(CYL_NO_DOUBLE) && !defined(CYL_NO_PRECISE)
+#define CYL__HANDOFF 1 /* CYL_PRECISE calls go to the body below (N9) */
+#endif
 #include CYL_HEADER_FILENAME
+#if !CYL_FLOAT_WIDE && !defined(CYL_NO_DOUBLE) && !defined(CYL_NO_PRECISE)
+#define CYL__BODY 1 /* the float API's body in double, private: its CYL_PRECISE calls */
+#define CYL__HELPER 1
+#define CYL__R float
+#define CYL__N(x) cylf_##x
+#define CYL__P(x) cyl__fw_##x
+#define CYL__LD 1
+#define CYL__TANG CYL_TANGENT_TOLF
+#define CYL__PARA CYL_PARALLEL_TOLF
+#define CYL__UINT uint32_t
+#define CYL__MANT 24
+#define CYL__EBIAS 127
+#include CYL_HEADER_FILENAME
+#endif
 #endif
 
 #endif /* CYLINDER_ISECT_H */
@@ -393,9 +409,14 @@ CYL_DEF const char *cyl_strerror(int code)
 /* Which cap plane slab end k lies on (a macro: gcc 12 folded the inline function less well). */
 #define CYL__CAP_PART(f, k) (((k) == 0) == !((f)->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH)
 
+#ifndef CYL__HELPER /* the public types (a helper body has its API's already) */
 typedef struct CYL__N(ray) { CYL__R o[3], d[3], tmin, tmax; } CYL__N(ray);
 typedef struct CYL__N(cylinder) { CYL__R c[3], a[3], r, h; } CYL__N(cylinder);
 typedef struct CYL__N(hit) { CYL__R t, t_err, n[3], v; int part; unsigned flags; } CYL__N(hit);
+#endif
+#ifdef CYL__HANDOFF
+static inline int cyl__fw_run(const cylf_ray *, const cylf_cylinder *, unsigned, int, cylf_hit *);
+#endif
 
 /* The frame (N1): the inputs in L, scaled on the exact path (t, v there 2^et, 2^ev times the
    frame's), and everything derived from them once. */
@@ -502,6 +523,9 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
 {
     CYL__P(frame) f; /* filled without loops: gcc then keeps the frame in registers */
     int ok;
+#ifdef CYL__HANDOFF
+    if (opts & CYL_PRECISE) return cyl__fw_run(ray, cyl, opts, want, hits);
+#endif
     if (sizeof(CYL__L) > sizeof(CYL__R)) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); }
     f.w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0], f.d[0] = (CYL__L)ray->d[0];
     f.w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1], f.d[1] = (CYL__L)ray->d[1];
@@ -522,6 +546,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     return CYL__CERT(&f, opts) && ok == CYL__DOUBT ? CYL__P(cold)(ray, cyl, opts, want, hits) : ok;
 }
 
+#ifndef CYL__HELPER
 CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                               unsigned opts, CYL__N(hit) *hit)
 { return !ray || !cyl || !hit ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 1, hit); }
@@ -532,6 +557,7 @@ CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder)
 
 CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
 { return !ray || !cyl ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 0, (CYL__N(hit) *)0); }
+#endif
 
 /* ------------------------------------------------------------------ frame */
 /* Everything the decisions use, from the cross products s = a × d and m = a × w (N1), and the
@@ -1028,6 +1054,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     return CYL__P(answer)(&f, opts, want, hits);
 }
 
+#ifndef CYL__HELPER
 /* The cylinder from p0 (its low cap center) to p1 (high cap center); |p1 − p0| with a
    power-of-two prescale, so it neither overflows nor underflows. NULL ends give a = 0. */
 CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p1[3], CYL__R r)
@@ -1052,8 +1079,11 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
     }
     return cy;
 }
+#endif
 
 #undef CYL__BODY
+#undef CYL__HELPER
+#undef CYL__HANDOFF
 #undef CYL__R
 #undef CYL__LD
 #undef CYL__L
@@ -1148,5 +1178,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        64u(|a||w| + Ha + |t||a||d|)/|ζ| + 2u|t|. A contact inside the band goes there too:
        its roots move by u/√e. Each crossing the double API then emits takes N8's step
        (polish): its t errs by up to 36 ulps on the hot path, the tier promises 2; the float
-       API's, computed in double, is within 2^-29 of the root already.
+       API's, computed in double, is within 2^-29 of the root already. Where it computes in
+       float (CYL_FLOAT_WIDE 0), its CYL_PRECISE calls go to the same body instantiated in
+       double (cyl__fw_run, one call); without double (CYL_NO_DOUBLE) there is no such tier.
 */

@@ -77,7 +77,7 @@ typedef CYL(hit) Hit;
 #define T_NAN ((T)NAN)
 
 /* ------------------------------------------------------------------ the precise tier */
-/* No CYL_PRECISE under CYL_NO_PRECISE (v2 defines it with CYL_FLOAT_WIDE=0): precise-only
+/* No CYL_PRECISE under CYL_NO_PRECISE (v2 defines it with CYL_NO_DOUBLE): precise-only
    tests and options skip. */
 #ifdef CYL_NO_PRECISE
 #define HAVE_PRECISE 0
