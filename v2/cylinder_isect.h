@@ -650,9 +650,10 @@ CYL__INL void CYL__P(slab)(const CYL__P(frame) *f, CYL__L s[2])
 /* The rim: is t inside the slab, ends included? */
 CYL__INL int CYL__P(in_slab)(CYL__L t, const CYL__L s[2]) { return !(t < s[0]) && !(t > s[1]); }
 
-/* The certified layer's test of one comparison (N9): x and y within their bounds' sum. */
+/* The certified layer's test of one comparison (N9): x and y not certainly farther apart than
+   their bounds' sum (a NaN bound, from a bound that overflowed, is no certificate). */
 CYL__INL int CYL__P(near)(CYL__L x, CYL__L ex, CYL__L y, CYL__L ey)
-{ return CYL__P(abs)(x - y) <= ex + ey; }
+{ return !(CYL__P(abs)(x - y) > ex + ey); }
 
 /* The t range, ends included, and t representable in R (the double API's hot path's t is). */
 CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t)
