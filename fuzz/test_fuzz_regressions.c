@@ -301,6 +301,72 @@ static void test_double_precise_tier_hit_on_clear_miss(void)
   replay_finding("double-precise-tier-hit-on-clear-miss", FIXED);
 }
 
+/* A review of v2's certified layer (CYL_PRECISE, N9), against the exact reference (ref/):
+ * three scenes it answered wrong, each with the exact answer hard-coded from ref/.
+ * 1. |a| = 2^400, r = 2^-400: r^2 A = 2^-1060 made D subnormal, outside what the bounds model;
+ *    the entry crossing was lost (exact: two wall hits; the range test now bounds r^2 A).
+ * 2. a.d = 3 * 2^-63 rounds to 0 and the origin lies 2^-61 off the low cap's plane: the slab
+ *    ends came out infinite with a zero bound, a certain miss (exact: the low cap at t = -4, then
+ *    the wall); now a plain a.d below 128u|a||d| is no certificate, and the exact path forms
+ *    z0 and a.d as compensated sums.
+ * 3. the exact path divided its cap step by the plain a.d (1.5e-3 of |a||d|): a cap hit 629
+ *    ulps beyond tmax (exact: a miss; the step now divides by the compensated a.d). */
+static void expect_precise_hits_d(const cyld_ray *ray, const cyld_cylinder *cyl, unsigned opts,
+                                  int n, const double *t, const int *part)
+{
+  cyld_hit h[2];
+  int i;
+  precise_or_skip();
+  memset(h, 0, sizeof h);
+  TEST_ASSERT_EQUAL_INT_MESSAGE(n, cyld_intersect_all(ray, cyl, opts, h), "count");
+  for (i = 0; i < n; i++) {
+    TEST_ASSERT_EQUAL_INT_MESSAGE(part[i], h[i].part, "part");
+    TEST_ASSERT_TRUE_MESSAGE(fabs(h[i].t - t[i]) <= h[i].t_err, "t_err holds the exact t");
+  }
+}
+
+static void test_double_precise_subnormal_discriminant(void)
+{
+  const cyld_ray ray = {{0, -0x1p-398, 0x1.fffd999828f4p-401}, {0, 0x1p-530, 0},
+                        0x1.ff0a1cae3722ap+131, (double)INFINITY};
+  const cyld_cylinder cyl = {{0, 0, 0}, {0x1p400, 0, 0}, 0x1p-400, (double)INFINITY};
+  const double t[2] = {0x1.ff39b4085e032p+131, 0x1.006325fbd0fe7p+132};
+  const int part[2] = {CYL_SIDE, CYL_SIDE};
+  expect_precise_hits_d(&ray, &cyl, CYL_PRECISE, 2, t, part);
+}
+
+static void test_precise_axial_speed_rounded_to_zero(void)
+{
+  const cyld_ray ray = {{-1, 0x1p-61, -0.5}, {0.125, 0x1p-63, -0.375}, -100, 100};
+  const cyld_cylinder cyl = {{0, 0, 0}, {6, 3, 2}, 2, 2};
+  const cylf_ray rayf = {{-1, 0x1p-61f, -0.5f}, {0.125f, 0x1p-63f, -0.375f}, -100, 100};
+  const cylf_cylinder cylf = {{0, 0, 0}, {6, 3, 2}, 2, 2};
+  const double t[2] = {-4, 0x1.20fa6292fd49ap+2};
+  const int part[2] = {CYL_CAP_LOW, CYL_SIDE};
+  cylf_hit hf[2];
+  int i;
+  expect_precise_hits_d(&ray, &cyl, CYL_PRECISE | CYL_CAPS, 2, t, part);
+  expect_precise_hits_d(&ray, &cyl, CYL_PRECISE, 1, t + 1, part + 1);
+  memset(hf, 0, sizeof hf);
+  TEST_ASSERT_EQUAL_INT_MESSAGE(2, cylf_intersect_all(&rayf, &cylf, CYL_PRECISE | CYL_CAPS, hf),
+                                "float count");
+  for (i = 0; i < 2; i++) {
+    TEST_ASSERT_EQUAL_INT_MESSAGE(part[i], hf[i].part, "float part");
+    TEST_ASSERT_TRUE_MESSAGE(fabs((double)hf[i].t - t[i]) <= (double)hf[i].t_err, "float t_err");
+  }
+}
+
+static void test_double_precise_cap_step_plain_axial_speed(void)
+{
+  const cyld_ray ray = {{-0x1.0ec47417b42cfp+0, 0x1.3b997e88c0bc2p+2, 0x1.bdc23d413f46ep+1},
+                        {-0x1.b843d58ba1c73p+0, 0x1.a4d9d73c9df8p-2, -0x1.b202e9d63ab9cp+0},
+                        -(double)INFINITY, 0x1.3dbb8e70542cap+0};
+  const cyld_cylinder cyl = {{-0x1.2acb00eeb4c2dp+2, 0x1.32023aab1217cp+1, 0x1.2c07ac830719p+1},
+                             {-0x1.a67206c23079p-3, -0x1.d737e965d9914p-2, 0x1.90228dd155082p-4},
+                             0x1.8b9e8033b0d76p-2, 0x1.c137d62657793p+2};
+  expect_precise_hits_d(&ray, &cyl, CYL_PRECISE | CYL_CAPS, 0, NULL, NULL);
+}
+
 /* Finding 23 (fixed by the commit that added it). Float from a segment 2^-109 long, the ray
  * 2^-111 from it: the fast path computes the float API in double and reported t = 0xb.f5418p-112
  * with t_err = 0xa.22p-138, a subnormal float: the double bound plus the rounding to float,
@@ -816,5 +882,8 @@ int main(void)
   RUN_TEST(test_double_tangent_far_root_zero_normal);
   RUN_TEST(test_double_near_parallel_default_rim);
   RUN_TEST(test_double_surface_origin_near_tangent_rim);
+  RUN_TEST(test_double_precise_subnormal_discriminant);
+  RUN_TEST(test_precise_axial_speed_rounded_to_zero);
+  RUN_TEST(test_double_precise_cap_step_plain_axial_speed);
   return UNITY_END();
 }

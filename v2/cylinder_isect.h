@@ -561,7 +561,7 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 
 /* ------------------------------------------------------------------ frame */
 /* Everything the decisions use, from the cross products s = a × d and m = a × w (N1), and the
-   range test (N2) on derived values: r|a|, r²|a|², |a|²|d|², Ha and (hot path) the steep
+   range test (N2) on derived values: r|a|, r²|a|², |a|²|d|², Ha and (hot path) r²A and the steep
    margin at least lo; |a|²(|w|² + r²), its product with |a|²|d|² and D's size at most hi; Ha
    finite unless h is. Every NaN, infinity, zero or negative of o, d, c, a, r, h fails it. */
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
@@ -596,7 +596,7 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     S = f->aww + f->r2aa, L2 = S * f->ad; /* L2 >= |a|²·|a|²D, L2/|a|² >= D */
     /* min and max pass a NaN on only as their second operand: h's is Ha's, the others' S's */
     lo = CYL__P(min)(CYL__P(min)(f->r * f->sqaa, f->r2aa), CYL__P(min)(f->ad, f->Ha));
-    if (!f->cold) lo = CYL__P(min)(CYL__P(steep)(f), lo);
+    if (!f->cold) lo = CYL__P(min)(CYL__P(min)(CYL__P(steep)(f), f->r2 * f->A), lo);
     hi = CYL__P(max)(CYL__P(max)(S, L2), L2 / f->aa);
     return lo >= f->lo && hi <= CYL__HOT_HI && !(f->Ha - f->H > CYL__LMAX);
 }
@@ -805,7 +805,7 @@ CYL__INL int CYL__P(band_doubt)(const CYL__P(frame) *f)
     return !(f->D - band > eD) && !(f->D + band < -eD);
 }
 
-/* Bounds e on the wall roots t and the slab ends s (N9); 1 where a root's is not first order. */
+/* Bounds e on the wall roots t and the slab ends s (N9); 1 where one is not first order. */
 CYL__INL int CYL__P(bounds)(const CYL__P(frame) *f, const CYL__L t[2], const CYL__L s[2],
                             CYL__L sq, CYL__L e[4])
 {
@@ -815,7 +815,7 @@ CYL__INL int CYL__P(bounds)(const CYL__P(frame) *f, const CYL__L t[2], const CYL
     e[0] = df0 / sq + 4 * u * CYL__P(abs)(t[0]), e[1] = df1 / sq + 4 * u * CYL__P(abs)(t[1]);
     e[2] = CYL__P(abs)(s[0]) <= CYL__LMAX ? es + CYL__P(abs)(s[0]) * (ed + 2 * u) : 0;
     e[3] = CYL__P(abs)(s[1]) <= CYL__LMAX ? es + CYL__P(abs)(s[1]) * (ed + 2 * u) : 0;
-    return !(CYL__P(max)(df0, df1) * f->A <= sq * sq);
+    return !(CYL__P(max)(df0, df1) * f->A <= sq * sq) || !(ed <= CYL__K(0.5)); /* ζ: first order */
 }
 
 /* The crossings in t order; occluded and intersect stop at the first, and nothing is emitted
@@ -934,16 +934,23 @@ CYL__INL CYL__L CYL__P(resid)(const CYL__P(frame) *f, const CYL__L ra[3], CYL__L
     return F.s + F.c;
 }
 
-/* The exact path's tangent band (N8): off the parallel rule, D from the residual at the
-   closest approach t_c: F(t_c) = −|a|²D/A, good to about u of itself where the plain D errs
-   by u·r²A and more; t_c = −B/A, then one step on g (linear). */
-CYL__COLD void CYL__P(exact_band)(CYL__P(frame) *f)
+/* The exact path's z0, ζ and D (N8): z0 and ζ from compensated sums (the slab's ends, the cap
+   parts); off the parallel rule, D from the residual F and g at t near the closest approach
+   t_c = −B/A: F(t) = g²/A − |a|²D/A exactly, so D = (g² − AF)/|a|², good to about u of itself
+   where the plain D errs by u·r²A and more; t_c then takes one step on g (linear). */
+CYL__COLD void CYL__P(exact_frame)(CYL__P(frame) *f)
 {
     CYL__L sa[2], ra[3], F, g;
+    CYL__P(acc) z = {0, 0}, ze = {0, 0};
+    int i;
+    for (i = 0; i < 3; i++)
+        CYL__P(acc_mul)(&z, f->a[i], f->w[i]), z.c += f->a[i] * f->wl[i],
+        CYL__P(acc_mul)(&ze, f->a[i], f->d[i]);
+    f->z0 = z.s + z.c, f->zeta = ze.s + ze.c;
     if (f->par) return;
     CYL__P(norm_a)(f, sa, ra);
     F = CYL__P(resid)(f, ra, f->tc = -f->B / f->A, &g);
-    f->D = -F * (f->A / f->aa), f->tc -= g / f->A;
+    f->D = (g * g - F * f->A) / f->aa, f->tc -= g / f->A;
 }
 
 /* t moved onto its residual's root by Newton's method on compensated sums (N8): a cap plane's
@@ -953,16 +960,17 @@ CYL__COLD void CYL__P(exact_band)(CYL__P(frame) *f)
 CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap)
 {
     CYL__L v = t, dt, g, sa[2], ra[3], H, Hh;
-    CYL__P(acc) F = {0, 0};
+    CYL__P(acc) F = {0, 0}, Z = {0, 0};
     int it, i;
     CYL__P(norm_a)(f, sa, ra);
-    if (part != CYL_SIDE) { /* a·x + H|a| on the low plane, x = w + t·d */
+    if (part != CYL_SIDE) { /* a·x + H|a| on the low plane, x = w + t·d, over ζ (both sums) */
         H = part == CYL_CAP_LOW ? f->H : -f->H, Hh = H * sa[0];
         for (i = 0; i < 3; i++)
             CYL__P(acc_mul)(&F, f->a[i], f->w[i]), CYL__P(acc_mul)(&F, t * f->a[i], f->d[i]),
-            F.c += f->a[i] * f->wl[i] + CYL__P(prod_err)(t, f->a[i], t * f->a[i]) * f->d[i];
+            F.c += f->a[i] * f->wl[i] + CYL__P(prod_err)(t, f->a[i], t * f->a[i]) * f->d[i],
+            CYL__P(acc_mul)(&Z, f->a[i], f->d[i]);
         CYL__P(acc_add)(&F, Hh), F.c += CYL__P(prod_err)(H, sa[0], Hh) + H * sa[1];
-        v = t - (F.s + F.c) / f->zeta;
+        v = t - (F.s + F.c) / (Z.s + Z.c);
         return CYL__P(abs)(v) <= CYL__LMAX ? v : t; /* ζ = 0 (no ends): t stays */
     }
     for (it = 0; it < 3; it++) {
@@ -1051,7 +1059,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         if (!CYL__P(derive)(&f)) return CYL_MISS;
     }
     f.par = CYL__P(parallel)(&f) <= 0;
-    if (f.exact) CYL__P(exact_band)(&f);
+    if (f.exact) CYL__P(exact_frame)(&f);
     return CYL__P(answer)(&f, opts, want, hits);
 }
 
@@ -1123,8 +1131,8 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        origins far along it), A = s·s, B = m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d,
        Ha = (h/2)|a|. The exact path forms s and m with Kahan's FMA difference of products
        (Jeannerod, Louvet, Muller, Math. Comp. 82, 2013), each component within 2u of itself.
-   N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², Ha and
-       |a|⁴|d|²(|w|² + r²) against one range; every NaN, infinity, zero or out-of-range input
+   N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², r²A, Ha
+       and |a|⁴|d|²(|w|² + r²) against one range (r²A: else D = r²A − P² can be subnormal); every NaN, infinity, zero or out-of-range input
        fails it and goes to the exact path, which validates in the documented order and
        scales lengths, d and a by powers of two (exact: its answers to a scene scaled by 2^k
        are the same bits scaled; the hot path's, without N8's step, agree within t_err).
@@ -1160,12 +1168,14 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        with w exact as a pair and each product's error kept exactly (FMA, or Dekker's split)
        in a compensated sum (Ogita, Rump, Oishi, "Accurate sum and dot product", SIAM J. Sci.
        Comput. 26, 2005): F's error is about u|F| + u²(r²|a|² + |a|²|x|²), so t lands within
-       about an ulp of the root, and the rim and t range decide on it. The tangent band
-       decides on D from the same residual at the closest approach t_c = −B/A: F(t_c) =
-       −|a|²D/A, and t_c's error ε changes it by only Aε² (F' vanishes there), about
-       u²|a|²|w|², where the plain D errs by u·r²A·|w|/r and more. A contact without roots is
-       at t_c after one step on g = (a × x)·s (linear, g' = A); one with roots is refined as
-       any wall root while the steps stay within half the roots' gap.
+       about an ulp of the root, and the rim and t range decide on it; z0 and ζ are such sums
+       too (a cap step divides by ζ: a plain one would leave u|a||d|/|ζ| of the step). The
+       tangent band decides on D from the same residual near the closest approach t_c = −B/A:
+       F(t) = g²/A − |a|²D/A for the quadratic, g = (a × x)·s = F'/2, so D = (g² − AF)/|a|²
+       whatever t's rounding (taking F alone left far origins' D to u²|a|²|w|²), where the
+       plain D errs by u·r²A·|w|/r and more. A contact without roots is at t_c after one step
+       on g (linear, g' = A); one with roots is refined as any wall root while the steps stay
+       within half the roots' gap.
    N9. The certified layer (CYL_PRECISE on the hot path): each
        comparison an answer depends on (tangent band, rims, t range, entry and exit, for
        both crossings whatever the entry point) is taken only where its operands lie farther
@@ -1176,7 +1186,9 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        r²), k = 128u(1 + |a||d|/|s|) (the last term: P's and that identity's error through
        s). A root moves by that over √(|a|²D) (|f'|/2), plus 4u|t| for the formula, while it
        stays below |a|²D/A (first order; else the exact path); D by k·S·A/|a|²; a slab end by
-       64u(|a||w| + Ha + |t||a||d|)/|ζ| + 2u|t|. A contact inside the band goes there too:
+       64u(|a||w| + Ha + |t||a||d|)/|ζ| + 2u|t|, while |ζ| > 128u|a||d| (the plain ζ may be
+       all rounding below that). A NaN or infinite bound certifies nothing. A contact inside
+       the band goes there too:
        its roots move by u/√e. Each crossing the double API then emits takes N8's step
        (polish): its t errs by up to 36 ulps on the hot path, the tier promises 2; the float
        API's, computed in double, is within 2^-29 of the root already. Where it computes in
