@@ -105,9 +105,9 @@
 
    ACCURACY
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
-   t_err held the exact t on all 510,492 float and 521,187 double hits; nothing misclassified
+   t_err held the exact t on all 510,492 float and 521,199 double hits; nothing misclassified
    beyond the band, default or CYL_PRECISE. t on well-conditioned hits: CYL_PRECISE within
-   0.5 ulps in every family, both APIs, at 445 (float) and 787 (double) instructions per
+   0.5 ulps in every family, both APIs, at 443 (float) and 798 (double) instructions per
    capped call, 3.7 and 6.7 times the end-point routine's (REPORT's headline; `make cost`).
    Default: float within 0.5 ulps; double within 0.5 on the tiny family, which the exact path
    answers (N8), and on the hot path within 7 ulps on the well family's walls, 14.4 on its
@@ -737,7 +737,9 @@ CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, uns
         CYL__P(lin)(g, f->s, -x->h, as, n);
         len = CYL__P(dot)(n, n);
         if (!(len >= CYL__LTINY * CYL__K(4503599627370496.0) && len <= CYL__LMAX * CYL__LU)) {
-            int e = CYL__LT(expo)(CYL__P(amax)(n)); /* |n|² out of the range */
+            int e; /* |n|² out of the range; zero where a contact's D and P vanished (N6) */
+            if (!(CYL__P(amax)(n) > 0)) CYL__P(mul3)(x->flags & CYL_F_INSIDE ? -1 : 1, as, n);
+            e = CYL__LT(expo)(CYL__P(amax)(n));
             n[0] = CYL__LT(scale)(n[0], -e), n[1] = CYL__LT(scale)(n[1], -e);
             n[2] = CYL__LT(scale)(n[2], -e), len = CYL__P(dot)(n, n);
         }
