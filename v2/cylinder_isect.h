@@ -107,8 +107,8 @@
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
    t_err held the exact t on all 510,492 float and 521,199 double hits; nothing misclassified
    beyond the band, default or CYL_PRECISE. t on well-conditioned hits: CYL_PRECISE within
-   0.5 ulps in every family, both APIs, at 443 (float) and 798 (double) instructions per
-   capped call, 3.7 and 6.7 times the end-point routine's (REPORT's headline; `make cost`).
+   0.5 ulps in every family, both APIs, at 444 (float) and 799 (double) instructions per
+   capped call, 3.7 and 6.8 times the end-point routine's (REPORT's headline; `make cost`).
    Default: float within 0.5 ulps; double within 0.5 on the tiny family, which the exact path
    answers (N8), and on the hot path within 7 ulps on the well family's walls, 14.4 on its
    caps, 35.9 on the huge family's caps (cancellation of z0 + Ha, N6), 271 for origins far
@@ -961,18 +961,19 @@ CYL__COLD void CYL__P(exact_frame)(CYL__P(frame) *f)
    roots' distance). */
 CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap)
 {
-    CYL__L v = t, dt, g, sa[2], ra[3], H, Hh;
+    CYL__L v = t, dt, g, sa[2], ra[3], H, Hh, zh, zl;
     CYL__P(acc) F = {0, 0}, Z = {0, 0};
     int it, i;
     CYL__P(norm_a)(f, sa, ra);
-    if (part != CYL_SIDE) { /* a·x + H|a| on the low plane, x = w + t·d, over ζ (both sums) */
+    if (part != CYL_SIDE) { /* a·w + H|a| + tζ on the low plane, ζ = a·d summed first */
         H = part == CYL_CAP_LOW ? f->H : -f->H, Hh = H * sa[0];
         for (i = 0; i < 3; i++)
-            CYL__P(acc_mul)(&F, f->a[i], f->w[i]), CYL__P(acc_mul)(&F, t * f->a[i], f->d[i]),
-            F.c += f->a[i] * f->wl[i] + CYL__P(prod_err)(t, f->a[i], t * f->a[i]) * f->d[i],
+            CYL__P(acc_mul)(&F, f->a[i], f->w[i]), F.c += f->a[i] * f->wl[i],
             CYL__P(acc_mul)(&Z, f->a[i], f->d[i]);
+        zh = CYL__P(acc_pair)(&Z, &zl);
         CYL__P(acc_add)(&F, Hh), F.c += CYL__P(prod_err)(H, sa[0], Hh) + H * sa[1];
-        v = t - (F.s + F.c) / (Z.s + Z.c);
+        CYL__P(acc_mul)(&F, t, zh), F.c += t * zl;
+        v = t - (F.s + F.c) / (zh + zl);
         return CYL__P(abs)(v) <= CYL__LMAX ? v : t; /* ζ = 0 (no ends): t stays */
     }
     for (it = 0; it < 3; it++) {
