@@ -536,7 +536,8 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
     if (CYL__CERT(&f, opts) && sizeof(CYL__L) == sizeof(CYL__R)) { /* w exact, for polish */
         int i;
-        for (i = 0; i < 3; i++) f.wl[i] = CYL__P(sum_err)((CYL__L)ray->o[i], -(CYL__L)cyl->c[i], f.w[i]);
+        for (i = 0; i < 3; i++)
+            f.wl[i] = CYL__P(sum_err)((CYL__L)ray->o[i], -(CYL__L)cyl->c[i], f.w[i]);
     }
     ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
     f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
@@ -650,8 +651,7 @@ CYL__INL void CYL__P(slab)(const CYL__P(frame) *f, CYL__L s[2])
 /* The rim: is t inside the slab, ends included? */
 CYL__INL int CYL__P(in_slab)(CYL__L t, const CYL__L s[2]) { return !(t < s[0]) && !(t > s[1]); }
 
-/* The certified layer's test of one comparison (N9): x and y not certainly farther apart than
-   their bounds' sum (a NaN bound, from a bound that overflowed, is no certificate). */
+/* N9: x and y not certainly farther apart than their bounds' sum (a NaN bound certifies none). */
 CYL__INL int CYL__P(near)(CYL__L x, CYL__L ex, CYL__L y, CYL__L ey)
 { return !(CYL__P(abs)(x - y) > ex + ey); }
 
@@ -936,18 +936,23 @@ CYL__INL CYL__L CYL__P(resid)(const CYL__P(frame) *f, const CYL__L ra[3], CYL__L
     return F.s + F.c;
 }
 
-/* The exact path's z0, ζ and D (N8): z0 and ζ from compensated sums (the slab's ends, the cap
-   parts); off the parallel rule, D from the residual F and g at t near the closest approach
-   t_c = −B/A: F(t) = g²/A − |a|²D/A exactly, so D = (g² − AF)/|a|², good to about u of itself
-   where the plain D errs by u·r²A and more; t_c then takes one step on g (linear). */
+/* z0 = a·w (w exact as w + wl) and ζ = a·d as compensated sums (N8). */
+CYL__INL void CYL__P(axial)(const CYL__P(frame) *f, CYL__P(acc) *z, CYL__P(acc) *ze)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        CYL__P(acc_mul)(z, f->a[i], f->w[i]), z->c += f->a[i] * f->wl[i],
+        CYL__P(acc_mul)(ze, f->a[i], f->d[i]);
+}
+
+/* The exact path's z0 and ζ (compensated sums) and, off the parallel rule, D = (g² − AF)/|a|²
+   from the residual F and g at t_c = −B/A (exact for the quadratic whatever t_c's rounding,
+   N8), where the plain D errs by u·r²A and more; t_c then takes one step on g (linear). */
 CYL__COLD void CYL__P(exact_frame)(CYL__P(frame) *f)
 {
     CYL__L sa[2], ra[3], F, g;
     CYL__P(acc) z = {0, 0}, ze = {0, 0};
-    int i;
-    for (i = 0; i < 3; i++)
-        CYL__P(acc_mul)(&z, f->a[i], f->w[i]), z.c += f->a[i] * f->wl[i],
-        CYL__P(acc_mul)(&ze, f->a[i], f->d[i]);
+    CYL__P(axial)(f, &z, &ze);
     f->z0 = z.s + z.c, f->zeta = ze.s + ze.c;
     if (f->par) return;
     CYL__P(norm_a)(f, sa, ra);
@@ -955,21 +960,18 @@ CYL__COLD void CYL__P(exact_frame)(CYL__P(frame) *f)
     f->D = (g * g - F * f->A) / f->aa, f->tc -= g / f->A;
 }
 
-/* t moved onto its residual's root by Newton's method on compensated sums (N8): a cap plane's
-   a·x ± H|a| (part LOW or HIGH; linear: one step), the wall's |a × x|² − r²|a|² (at most three
-   steps, what a step leaves being about dt²/(2·gap); kept if it moved less than gap, half the
-   roots' distance). */
+/* t onto its residual's root by Newton's method on compensated sums (N8): a cap plane's a·x ±
+   H|a| (part LOW or HIGH; one step), the wall's |a × x|² − r²|a|² (up to three, each leaving
+   about dt²/(2·gap); kept if it moved less than gap, half the roots' distance). */
 CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap)
 {
     CYL__L v = t, dt, g, sa[2], ra[3], H, Hh, zh, zl;
     CYL__P(acc) F = {0, 0}, Z = {0, 0};
-    int it, i;
+    int it;
     CYL__P(norm_a)(f, sa, ra);
     if (part != CYL_SIDE) { /* a·w + H|a| + tζ on the low plane, ζ = a·d summed first */
         H = part == CYL_CAP_LOW ? f->H : -f->H, Hh = H * sa[0];
-        for (i = 0; i < 3; i++)
-            CYL__P(acc_mul)(&F, f->a[i], f->w[i]), F.c += f->a[i] * f->wl[i],
-            CYL__P(acc_mul)(&Z, f->a[i], f->d[i]);
+        CYL__P(axial)(f, &F, &Z);
         zh = CYL__P(acc_pair)(&Z, &zl);
         CYL__P(acc_add)(&F, Hh), F.c += CYL__P(prod_err)(H, sa[0], Hh) + H * sa[1];
         CYL__P(acc_mul)(&F, t, zh), F.c += t * zl;
@@ -1134,12 +1136,12 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        origins far along it), A = s·s, B = m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d,
        Ha = (h/2)|a|. The exact path forms s and m with Kahan's FMA difference of products
        (Jeannerod, Louvet, Muller, Math. Comp. 82, 2013), each component within 2u of itself.
-   N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², r²A, Ha
-       and |a|⁴|d|²(|w|² + r²) against one range (r²A: else D = r²A − P² can be subnormal); every NaN, infinity, zero or out-of-range input
-       fails it and goes to the exact path, which validates in the documented order and
-       scales lengths, d and a by powers of two (exact: its answers to a scene scaled by 2^k
-       are the same bits scaled; the hot path's, without N8's step, agree within t_err).
-       Within the range nothing the bounds use overflows or underflows.
+   N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², r²A (else D
+       can be subnormal), Ha and |a|⁴|d|²(|w|² + r²) against one range; every NaN, infinity, zero
+       or out-of-range input fails it and goes to the exact path, which validates in the
+       documented order and scales lengths, d and a by powers of two (exact: its answers to a
+       scene scaled by 2^k are the same bits scaled; the hot path's, without N8's step, agree
+       within t_err). Within the range nothing the bounds use overflows or underflows.
    N3. Geometric discriminant B² − AC = |a|²·D, D = r²A − P², P = w·s (Ray Tracing Gems,
        ch. 7; pbrt-v4 cylinders): no difference of large squares for far origins.
    N4. Stable root pair q = −(B + sgn(B)√(|a|²D)), t = q/A and C/q (Numerical Recipes §5.6);
@@ -1179,22 +1181,20 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        plain D errs by u·r²A·|w|/r and more. A contact without roots is at t_c after one step
        on g (linear, g' = A); one with roots is refined as any wall root while the steps stay
        within half the roots' gap.
-   N9. The certified layer (CYL_PRECISE on the hot path): each
-       comparison an answer depends on (tangent band, rims, t range, entry and exit, for
-       both crossings whatever the entry point) is taken only where its operands lie farther
-       apart than their bounds' sum; else the exact path answers. The bounds are a priori,
-       from magnitudes the hot path has: s and m carry about u|a||d| and u|a||w| (w's own
-       rounding included), so A, B, C, D, and the quadratic each root solves (the root pair
-       uses √(|a|²D), not B² − AC), err at t by at most k(S + t²|a|²|d|²), S = |a|²(|w|² +
-       r²), k = 128u(1 + |a||d|/|s|) (the last term: P's and that identity's error through
-       s). A root moves by that over √(|a|²D) (|f'|/2), plus 4u|t| for the formula, while it
-       stays below |a|²D/A (first order; else the exact path); D by k·S·A/|a|²; a slab end by
-       64u(|a||w| + Ha + |t||a||d|)/|ζ| + 2u|t|, while |ζ| > 128u|a||d| (the plain ζ may be
-       all rounding below that). A NaN or infinite bound certifies nothing. A contact inside
-       the band goes there too:
-       its roots move by u/√e. Each crossing the double API then emits takes N8's step
-       (polish): its t errs by up to 36 ulps on the hot path, the tier promises 2; the float
-       API's, computed in double, is within 2^-29 of the root already. Where it computes in
-       float (CYL_FLOAT_WIDE 0), its CYL_PRECISE calls go to the same body instantiated in
-       double (cyl__fw_run, one call); without double (CYL_NO_DOUBLE) there is no such tier.
+   N9. The certified layer (CYL_PRECISE on the hot path): each comparison an answer depends on
+       (tangent band, rims, t range, entry and exit, for both crossings whatever the entry point)
+       is taken only where its operands lie farther apart than their bounds' sum; else the exact
+       path answers. The bounds are a priori, from magnitudes the hot path has: s and m carry about
+       u|a||d| and u|a||w| (w's own rounding included), so A, B, C, D, and the quadratic each root
+       solves (the root pair uses √(|a|²D), not B² − AC), err at t by at most k(S + t²|a|²|d|²), S
+       = |a|²(|w|² + r²), k = 128u(1 + |a||d|/|s|) (the last term: P's and that identity's error
+       through s). A root moves by that over √(|a|²D) (|f'|/2), plus 4u|t| for the formula, while
+       it stays below |a|²D/A (first order; else the exact path); D by k·S·A/|a|²; a slab end by
+       64u(|a||w| + Ha + |t||a||d|)/|ζ| + 2u|t|, while |ζ| > 128u|a||d| (the plain ζ may be all
+       rounding below that). A NaN or infinite bound certifies nothing. A contact inside the band
+       goes there too: its roots move by u/√e. Each crossing the double API then emits takes N8's
+       step (polish): its t errs by up to 36 ulps on the hot path, the tier promises 2; the float
+       API's, computed in double, is within 2^-29 of the root already. Where it computes in float
+       (CYL_FLOAT_WIDE 0), its CYL_PRECISE calls go to the same body instantiated in double
+       (cyl__fw_run, one call); without double (CYL_NO_DOUBLE) there is no such tier.
 */
