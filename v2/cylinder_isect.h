@@ -985,16 +985,16 @@ CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__
     return CYL__P(abs)(v - t) < gap ? v : t;
 }
 
-/* The exact path's slab ends and wall roots on their residuals' roots (N8); a contact without
-   roots is at the closest approach. */
+/* The exact path's slab ends and wall roots on their residuals' roots, the roots from its t_c
+   and D (N8); a contact without roots is at the closest approach. */
 CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, CYL__L t[2], CYL__L s[2])
 {
     CYL__L lo = CYL__P(polish)(f, s[0], CYL__CAP_PART(f, 0), 0);
-    CYL__L hi = CYL__P(polish)(f, s[1], CYL__CAP_PART(f, 1), 0), gap = (t[1] - t[0]) / 2;
+    CYL__L hi = CYL__P(polish)(f, s[1], CYL__CAP_PART(f, 1), 0);
+    CYL__L gap = f->D > 0 ? CYL__LSQRT(f->aa * f->D) / f->A : 0; /* half the roots' distance */
     if (lo <= hi) s[0] = lo, s[1] = hi;
     if (f->par) return;
-    if (!(f->D > 0)) t[0] = t[1] = f->tc;
-    else t[0] = CYL__P(polish)(f, t[0], CYL_SIDE, gap), t[1] = CYL__P(polish)(f, t[1], CYL_SIDE, gap);
+    t[0] = CYL__P(polish)(f, f->tc - gap, CYL_SIDE, gap), t[1] = CYL__P(polish)(f, f->tc + gap, CYL_SIDE, gap);
 }
 
 /* Validation in the documented order (the hot path sent what its range test refused). */
@@ -1178,9 +1178,9 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        tangent band decides on D from the same residual near the closest approach t_c = −B/A:
        F(t) = g²/A − |a|²D/A for the quadratic, g = (a × x)·s = F'/2, so D = (g² − AF)/|a|²
        whatever t's rounding (taking F alone left far origins' D to u²|a|²|w|²), where the
-       plain D errs by u·r²A·|w|/r and more. A contact without roots is at t_c after one step
-       on g (linear, g' = A); one with roots is refined as any wall root while the steps stay
-       within half the roots' gap.
+       plain D errs by u·r²A·|w|/r and more. t_c takes one step on g (linear, g' = A); the
+       roots start at t_c ± √(|a|²D)/A (the plain C cancels for an origin on the wall), each
+       refined while its steps stay within that half gap; without roots, a contact is at t_c.
    N9. The certified layer (CYL_PRECISE on the hot path): each comparison an answer depends on
        (tangent band, rims, t range, entry and exit, for both crossings whatever the entry point)
        is taken only where its operands lie farther apart than their bounds' sum; else the exact
