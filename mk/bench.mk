@@ -64,8 +64,9 @@ $(BENCH_BUILD)/$(1)$(ACC_SUFFIX): bench/test_accuracy.c $(BENCH_SRCS) $(BENCH_HD
 RUNNERS += $(BENCH_BUILD)/$(1)$(ACC_SUFFIX)
 endef
 $(eval $(call BENCH_ACC_RUNNER,test_accuracy,))
-# ... for the float API computed in float (as on targets without a double FPU) ...
-$(eval $(call BENCH_ACC_RUNNER,test_accuracy_narrow,-DCYL_FLOAT_WIDE=0))
+# ... for the float API computed in float (as on targets without a double FPU), and the double
+# API's CYL_PRECISE without v2's FMA copy (as on CPUs without the FMA) ...
+$(eval $(call BENCH_ACC_RUNNER,test_accuracy_narrow,-DCYL_FLOAT_WIDE=0 -DCYL_FMA_DISPATCH=0))
 # ... and with a hardware FMA (where this machine has FMA3).
 ifeq ($(HOST_FMA),1)
 $(eval $(call BENCH_ACC_RUNNER,test_accuracy_fma,-mfma))

@@ -94,6 +94,12 @@ $(eval $(call TESTS_CFG_RUNNER,forced_inline,tests/test_float.c,-include tests/c
 $(eval $(call TESTS_CFG_RUNNER,no_fast_float,tests/test_float.c,-DCYL_NO_FAST_PATH,c))
 $(eval $(call TESTS_CFG_RUNNER,no_fast_double,tests/test_double.c,-DCYL_NO_FAST_PATH,c))
 endif
+# v2 only: the double API's CYL_PRECISE calls without the FMA copy (CYL_FMA_DISPATCH 0, the
+# path of CPUs without the FMA), and that copy giving the same bits as that path.
+ifeq ($(V),2)
+$(eval $(call TESTS_CFG_RUNNER,no_dispatch,tests/test_double.c,-DCYL_FMA_DISPATCH=0,c))
+$(eval $(call TESTS_CFG_RUNNER,dispatch,tests/config/cfg_dispatch_main.c tests/config/cfg_dispatch_other.c bench/cases.c,-Ibench,c))
+endif
 ifeq ($(HOST_FMA),1)
 $(eval $(call TESTS_CFG_RUNNER,fma_float,tests/test_float.c,-mfma,c))
 $(eval $(call TESTS_CFG_RUNNER,fma_double,tests/test_double.c,-mfma,c))

@@ -96,6 +96,8 @@
      CYL_FLOAT_WIDE        1 where double is hardware   the float API computes in double (the
                            (x86-64, AArch64, ARM with   same body, another working type); 0: in
                            VFP-D, RV64D, s390x, ppc64)  float (always so with CYL_NO_DOUBLE)
+     CYL_FMA_DISPATCH      1 on x86-64 (gcc, clang)     cyld_* CYL_PRECISE calls run a copy built
+                           built without -mfma          for the FMA where the CPU has it; 0: never
      CYL_TANGENT_TOLF      2^-16 = 2^-(24-8)            tangent band on e = 1 − ρ²/r²
      CYL_TANGENT_TOL       2^-45 = 2^-(53-8)
      CYL_PARALLEL_TOLF     2^-24 = u (float)            parallel bound on sin(angle)
@@ -286,6 +288,13 @@ static inline double cyl__sqrt(double x) { CYL__ROOT(x, "sd", "d"); return x; }
 #else
 #define CYL__SUPPORTED CYL_OPTIONS_ALL
 #endif
+/* CYL_FMA_DISPATCH (CONFIGURATION): where the double API's CYL_PRECISE calls may use the FMA (N9). */
+#if !defined(CYL_FMA_DISPATCH) && defined(__x86_64__) && !defined(__FMA__) && !defined(CYL_NO_PRECISE) && \
+    defined(__GNUC__) && !defined(__INTEL_COMPILER) && (!defined(__clang__) || __clang_major__ >= 11)
+#define CYL_FMA_DISPATCH 1
+#elif !defined(CYL_FMA_DISPATCH)
+#define CYL_FMA_DISPATCH 0
+#endif
 
 CYL_DEF const char *cyl_strerror(int code)
 {
@@ -304,50 +313,97 @@ CYL_DEF const char *cyl_strerror(int code)
     }
 }
 
-/* One body, included once per precision with these parameters (the body #undefs them): CYL__R
-   the API's type, CYL__N/CYL__P public/private names, CYL__LD 1 if the working type L is double,
-   CYL__TANG, CYL__PARA the tolerances, CYL__UINT, CYL__MANT, CYL__EBIAS R's bit layout. */
+/* The body's types, names and constants, chosen where it uses them: CYL__IFL(x, y) is x in a
+   body whose working type L is double, else y; CYL__IFR likewise for the API's type R. The range
+   (N2), L = double (float): lower 2^-300 (2^-60), upper 2^900 (2^120); on the exact path r²|a|²
+   down to 2^-600 (2^-76). */
+#define CYL__CAT(a, b) CYL__CAT_(a, b)
+#define CYL__CAT_(a, b) a##b
+#define CYL__SEL1(x, y) x
+#define CYL__SEL0(x, y) y
+#define CYL__IFL(x, y) CYL__CAT(CYL__SEL, CYL__LD)(x, y)
+#define CYL__IFR(x, y) CYL__CAT(CYL__SEL, CYL__RD)(x, y)
+#define CYL__R CYL__IFR(double, float)
+#define CYL__N(x) CYL__IFR(cyld_##x, cylf_##x)
+#define CYL__RMAX CYL__IFR(DBL_MAX, FLT_MAX)
+#define CYL__RMIN CYL__IFR(DBL_MIN, FLT_MIN)
+#define CYL__RSQRT(x) CYL__IFR(CYL_SQRT, CYL_SQRTF)(x)
+#define CYL__UINT CYL__IFR(uint64_t, uint32_t)
+#define CYL__MANT CYL__IFR(53, 24)
+#define CYL__EBIAS CYL__IFR(1023, 127)
+#define CYL__TANG CYL__IFR(CYL_TANGENT_TOL, CYL_TANGENT_TOLF)
+#define CYL__PARA CYL__IFR(CYL_PARALLEL_TOL, CYL_PARALLEL_TOLF)
+#define CYL__L CYL__IFL(double, float)
+#define CYL__LT(x) CYL__IFL(cyl__d_##x, cyl__f_##x)
+#define CYL__K(x) CYL__IFL(x, x##f)
+#define CYL__LMAX CYL__IFL(DBL_MAX, FLT_MAX)
+#define CYL__LU (CYL__IFL(DBL_EPSILON, FLT_EPSILON) / 2)
+#define CYL__LSQRT(x) CYL__IFL(CYL_SQRT, CYL_SQRTF)(x)
+#define CYL__LABS(x) CYL__IFL(CYL__B(fabs), CYL__B(fabsf))(x)
+#define CYL__LFMA(a, b, c) CYL__IFL(CYL_FMA, CYL_FMAF)(a, b, c)
+#define CYL__LSPLIT CYL__IFL(134217729.0, 4097.0f) /* 2^27 + 1, 2^12 + 1 */
+#define CYL__LTINY CYL__IFL(4.9406564584124654e-324, 1.40129846e-45f) /* 2^-1074, 2^-149 */
+#define CYL__HOT_LO CYL__IFL(4.9090934652977266e-91, 8.67361738e-19f)
+#define CYL__HOT_HI CYL__IFL(8.452712498170644e270, 1.32922800e36f)
+#define CYL__COLD_LO CYL__IFL(2.4099198651028841e-181, 1.32348898e-23f)
+#define CYL__LINF (CYL__LMAX * 2)
+
+/* One body, included once per API with these parameters (the body #undefs them): CYL__RD 1 if
+   the API's type R is double, CYL__P private names, CYL__LD 1 if the working type L is. A
+   helper body (CYL__HELPER) is the API's in another working type or instruction set: where
+   CYL__HANDOFF names it and CYL__HANDOFF_IF holds, CYL_PRECISE calls go there, out of line (N9). */
 #ifndef CYL_NO_DOUBLE
 #define CYL__BODY 1
-#define CYL__R double
+#define CYL__RD 1
 #define CYL__LD 1
-#define CYL__N(x) cyld_##x
 #define CYL__P(x) cyl__d_##x
-#define CYL__TANG CYL_TANGENT_TOL
-#define CYL__PARA CYL_PARALLEL_TOL
-#define CYL__UINT uint64_t
-#define CYL__MANT 53
-#define CYL__EBIAS 1023
+#if CYL_FMA_DISPATCH
+#define CYL__HANDOFF(x) cyl__dx_##x
+#define CYL__HANDOFF_IF(want) ((want) > 0 && __builtin_cpu_supports("fma")) /* polish: N8 */
+#endif
 #include CYL_HEADER_FILENAME
+#if CYL_FMA_DISPATCH
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("fma"))), apply_to = function)
+#pragma float_control(push)
+#pragma clang fp contract(off)
+#else
+#pragma GCC push_options
+#pragma GCC target("fma")
+#pragma GCC optimize("fp-contract=off", "no-tree-slp-vectorize")
+#endif
+#define CYL__BODY 1 /* the double API's body with the FMA, private: its CYL_PRECISE calls */
+#define CYL__HELPER 1
+#define CYL__RD 1
+#define CYL__LD 1
+#define CYL__P(x) cyl__dx_##x
+#define CYL__LFASTFMA 1
+#include CYL_HEADER_FILENAME
+#if defined(__clang__)
+#pragma float_control(pop)
+#pragma clang attribute pop
+#else
+#pragma GCC pop_options
+#endif
+#endif
 #endif
 
 #ifndef CYL_NO_FLOAT
 #define CYL__BODY 1
-#define CYL__R float
-#define CYL__N(x) cylf_##x
+#define CYL__RD 0
 #define CYL__P(x) cyl__f_##x
 #define CYL__LD CYL_FLOAT_WIDE
-#define CYL__TANG CYL_TANGENT_TOLF
-#define CYL__PARA CYL_PARALLEL_TOLF
-#define CYL__UINT uint32_t
-#define CYL__MANT 24
-#define CYL__EBIAS 127
-#if !CYL_FLOAT_WIDE && !defined(CYL_NO_DOUBLE) && !defined(CYL_NO_PRECISE)
-#define CYL__HANDOFF 1 /* CYL_PRECISE calls go to the body below (N9) */
+#if !CYL_FLOAT_WIDE && !defined(CYL_NO_PRECISE)
+#define CYL__HANDOFF(x) cyl__fw_##x
+#define CYL__HANDOFF_IF(want) 1
 #endif
 #include CYL_HEADER_FILENAME
-#if !CYL_FLOAT_WIDE && !defined(CYL_NO_DOUBLE) && !defined(CYL_NO_PRECISE)
+#if !CYL_FLOAT_WIDE && !defined(CYL_NO_PRECISE)
 #define CYL__BODY 1 /* the float API's body in double, private: its CYL_PRECISE calls */
 #define CYL__HELPER 1
-#define CYL__R float
-#define CYL__N(x) cylf_##x
+#define CYL__RD 0
 #define CYL__P(x) cyl__fw_##x
 #define CYL__LD 1
-#define CYL__TANG CYL_TANGENT_TOLF
-#define CYL__PARA CYL_PARALLEL_TOLF
-#define CYL__UINT uint32_t
-#define CYL__MANT 24
-#define CYL__EBIAS 127
 #include CYL_HEADER_FILENAME
 #endif
 #endif
@@ -356,53 +412,6 @@ CYL_DEF const char *cyl_strerror(int code)
 
 #else /* CYL__BODY: one precision, written once */
 
-/* R's constants and the working type L's. The range (N2), L = double (float): lower 2^-300
-   (2^-60), upper 2^900 (2^120); scaled on the exact path, r²|a|² down to 2^-600 (2^-76). */
-#if CYL__MANT == 24
-#define CYL__RMAX FLT_MAX
-#define CYL__RMIN FLT_MIN
-#define CYL__RSQRT(x) CYL_SQRTF(x)
-#else
-#define CYL__RMAX DBL_MAX
-#define CYL__RMIN DBL_MIN
-#define CYL__RSQRT(x) CYL_SQRT(x)
-#endif
-#if CYL__LD
-#define CYL__L double
-#define CYL__LT(x) cyl__d_##x
-#define CYL__K(x) x
-#define CYL__LMAX DBL_MAX
-#define CYL__LU (DBL_EPSILON / 2)
-#define CYL__LSQRT(x) CYL_SQRT(x)
-#define CYL__LABS(x) CYL__B(fabs)(x)
-#define CYL__LFMA(a, b, c) CYL_FMA(a, b, c)
-#define CYL__LSPLIT 134217729.0 /* 2^27 + 1 */
-#if defined(__FP_FAST_FMA) || defined(__FMA__) || defined(__aarch64__)
-#define CYL__LFASTFMA 1
-#endif
-#define CYL__LTINY 4.9406564584124654e-324 /* 2^-1074 */
-#define CYL__HOT_LO 4.9090934652977266e-91 /* 2^-300 */
-#define CYL__HOT_HI 8.452712498170644e270 /* 2^900 */
-#define CYL__COLD_LO 2.4099198651028841e-181 /* 2^-600 */
-#else
-#define CYL__L float
-#define CYL__LT(x) cyl__f_##x
-#define CYL__K(x) x##f
-#define CYL__LMAX FLT_MAX
-#define CYL__LU (FLT_EPSILON / 2)
-#define CYL__LSQRT(x) CYL_SQRTF(x)
-#define CYL__LABS(x) CYL__B(fabsf)(x)
-#define CYL__LFMA(a, b, c) CYL_FMAF(a, b, c)
-#define CYL__LSPLIT 4097.0f /* 2^12 + 1 */
-#if defined(__FP_FAST_FMAF) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
-#define CYL__LFASTFMA 1
-#endif
-#define CYL__LTINY 1.40129846e-45f /* 2^-149 */
-#define CYL__HOT_LO 8.67361738e-19f /* 2^-60 */
-#define CYL__HOT_HI 1.32922800e36f /* 2^120 */
-#define CYL__COLD_LO 1.32348898e-23f /* 2^-76 */
-#endif
-#define CYL__LINF (CYL__LMAX * 2)
 /* The certified layer runs (N9); what answer returns when it is not sure. */
 #define CYL__CERT(f, opts) (((opts) & CYL_PRECISE) && !(f)->cold)
 #define CYL__DOUBT (-100)
@@ -415,7 +424,7 @@ typedef struct CYL__N(cylinder) { CYL__R c[3], a[3], r, h; } CYL__N(cylinder);
 typedef struct CYL__N(hit) { CYL__R t, t_err, n[3], v; int part; unsigned flags; } CYL__N(hit);
 #endif
 #ifdef CYL__HANDOFF
-static inline int cyl__fw_run(const cylf_ray *, const cylf_cylinder *, unsigned, int, cylf_hit *);
+CYL__OUT int CYL__HANDOFF(out)(const CYL__N(ray) *, const CYL__N(cylinder) *, unsigned, int, CYL__N(hit) *);
 #endif
 
 /* The frame (N1): the inputs in L, scaled on the exact path (t, v there 2^et, 2^ev times the
@@ -524,7 +533,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     CYL__P(frame) f; /* filled without loops: gcc then keeps the frame in registers */
     int ok;
 #ifdef CYL__HANDOFF
-    if (opts & CYL_PRECISE) return cyl__fw_run(ray, cyl, opts, want, hits);
+    if ((opts & CYL_PRECISE) && CYL__HANDOFF_IF(want)) return CYL__HANDOFF(out)(ray, cyl, opts, want, hits);
 #endif
     if (sizeof(CYL__L) > sizeof(CYL__R)) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); }
     f.w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0], f.d[0] = (CYL__L)ray->d[0];
@@ -547,7 +556,11 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     return CYL__CERT(&f, opts) && ok == CYL__DOUBT ? CYL__P(cold)(ray, cyl, opts, want, hits) : ok;
 }
 
-#ifndef CYL__HELPER
+#ifdef CYL__HELPER /* the handoff's target: one out-of-line copy for every call site */
+CYL__OUT int CYL__P(out)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                         int want, CYL__N(hit) *hits)
+{ return CYL__P(run)(ray, cyl, opts, want, hits); }
+#else
 CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                               unsigned opts, CYL__N(hit) *hit)
 { return !ray || !cyl || !hit ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 1, hit); }
@@ -860,7 +873,8 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
    split (a call to fma() would spill every register around it). */
 CYL__INL CYL__L CYL__P(prod_err)(CYL__L x, CYL__L y, CYL__L p)
 {
-#ifdef CYL__LFASTFMA
+#if defined(CYL__LFASTFMA) || defined(__FMA__) || (CYL__LD ? defined(__FP_FAST_FMA) || defined(__aarch64__) \
+                                                : defined(__FP_FAST_FMAF) || defined(__ARM_FEATURE_FMA))
     return CYL__LFMA(x, y, -p);
 #else
     CYL__L cx = x * CYL__LSPLIT, cy = y * CYL__LSPLIT, xh = cx - (cx - x), yh = cy - (cy - y);
@@ -1098,39 +1112,17 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__BODY
 #undef CYL__HELPER
 #undef CYL__HANDOFF
-#undef CYL__R
+#undef CYL__HANDOFF_IF
 #undef CYL__LD
-#undef CYL__L
-#undef CYL__N
+#undef CYL__RD
 #undef CYL__P
-#undef CYL__LT
-#undef CYL__K
-#undef CYL__LTINY
-#undef CYL__LINF
 #undef CYL__CERT
 #undef CYL__DOUBT
 #undef CYL__CAP_PART
-#undef CYL__TANG
-#undef CYL__PARA
-#undef CYL__UINT
-#undef CYL__MANT
-#undef CYL__EBIAS
-#undef CYL__RMAX
-#undef CYL__RMIN
-#undef CYL__LMAX
-#undef CYL__LU
-#undef CYL__LSQRT
-#undef CYL__LABS
-#undef CYL__LFMA
-#undef CYL__LSPLIT
 #undef CYL__LFASTFMA
-#undef CYL__RSQRT
-#undef CYL__HOT_HI
-#undef CYL__HOT_LO
-#undef CYL__COLD_LO
 #endif /* CYL__BODY */
 
-/* NOTES (cited from the code as N1 .. N8); u is the working type's unit roundoff
+/* NOTES (cited from the code as N1 .. N9); u is the working type's unit roundoff
    N1. One formulation (DESIGN.md of the project): w = o − c, s = a × d, m = a × w (cross
        products, never projections: no cancellation for rays near the axis direction or
        origins far along it), A = s·s, B = m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d,
@@ -1194,7 +1186,9 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        rounding below that). A NaN or infinite bound certifies nothing. A contact inside the band
        goes there too: its roots move by u/√e. Each crossing the double API then emits takes N8's
        step (polish): its t errs by up to 36 ulps on the hot path, the tier promises 2; the float
-       API's, computed in double, is within 2^-29 of the root already. Where it computes in float
-       (CYL_FLOAT_WIDE 0), its CYL_PRECISE calls go to the same body instantiated in double
-       (cyl__fw_run, one call); without double (CYL_NO_DOUBLE) there is no such tier.
+       API's, computed in double, is within 2^-29 of the root already. A helper body, out of line,
+       takes an API's CYL_PRECISE calls: the float API's in double where it computes in float
+       (CYL_FLOAT_WIDE 0; without double there is no such tier), and, on x86-64 built without the
+       FMA, the double API's built with it (CYL_FMA_DISPATCH) where the CPU has it: polish's exact
+       products each become one instruction, and with no contraction the answers are the same bits.
 */
