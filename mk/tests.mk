@@ -94,11 +94,13 @@ $(eval $(call TESTS_CFG_RUNNER,forced_inline,tests/test_float.c,-include tests/c
 $(eval $(call TESTS_CFG_RUNNER,no_fast_float,tests/test_float.c,-DCYL_NO_FAST_PATH,c))
 $(eval $(call TESTS_CFG_RUNNER,no_fast_double,tests/test_double.c,-DCYL_NO_FAST_PATH,c))
 endif
-# v2 only: the double API's CYL_PRECISE calls without the FMA copy (CYL_FMA_DISPATCH 0, the
-# path of CPUs without the FMA), and that copy giving the same bits as that path.
+# v2 only: CYL_PRECISE calls without the FMA copy (CYL_FMA_DISPATCH 0, the path of CPUs without
+# the FMA), and that copy giving the same bits as that path (at -O2 in GNU C, where gcc contracts
+# and vectorizes unless told not to).
 ifeq ($(V),2)
-$(eval $(call TESTS_CFG_RUNNER,no_dispatch,tests/test_double.c,-DCYL_FMA_DISPATCH=0,c))
-$(eval $(call TESTS_CFG_RUNNER,dispatch,tests/config/cfg_dispatch_main.c tests/config/cfg_dispatch_other.c bench/cases.c,-Ibench,c))
+$(eval $(call TESTS_CFG_RUNNER,no_dispatch_float,tests/test_float.c,-DCYL_FMA_DISPATCH=0,c))
+$(eval $(call TESTS_CFG_RUNNER,no_dispatch_double,tests/test_double.c,-DCYL_FMA_DISPATCH=0,c))
+$(eval $(call TESTS_CFG_RUNNER,dispatch,tests/config/cfg_dispatch_main.c tests/config/cfg_dispatch_other.c bench/cases.c,-Ibench -O2 -std=gnu99,c))
 endif
 ifeq ($(HOST_FMA),1)
 $(eval $(call TESTS_CFG_RUNNER,fma_float,tests/test_float.c,-mfma,c))

@@ -96,8 +96,8 @@
      CYL_FLOAT_WIDE        1 where double is hardware   the float API computes in double (the
                            (x86-64, AArch64, ARM with   same body, another working type); 0: in
                            VFP-D, RV64D, s390x, ppc64)  float (always so with CYL_NO_DOUBLE)
-     CYL_FMA_DISPATCH      1 on x86-64 (gcc, clang)     cyld_* CYL_PRECISE calls run a copy built
-                           built without -mfma          for the FMA where the CPU has it; 0: never
+     CYL_FMA_DISPATCH      1 on x86-64 (gcc, clang)     CYL_PRECISE calls run a copy built for
+                           built without -mfma          the FMA where the CPU has it; 0: never
      CYL_TANGENT_TOLF      2^-16 = 2^-(24-8)            tangent band on e = 1 − ρ²/r²
      CYL_TANGENT_TOL       2^-45 = 2^-(53-8)
      CYL_PARALLEL_TOLF     2^-24 = u (float)            parallel bound on sin(angle)
@@ -288,7 +288,7 @@ static inline double cyl__sqrt(double x) { CYL__ROOT(x, "sd", "d"); return x; }
 #else
 #define CYL__SUPPORTED CYL_OPTIONS_ALL
 #endif
-/* CYL_FMA_DISPATCH (CONFIGURATION): where the double API's CYL_PRECISE calls may use the FMA (N9). */
+/* CYL_FMA_DISPATCH (CONFIGURATION): where CYL_PRECISE calls may use the FMA (N9). */
 #if !defined(CYL_FMA_DISPATCH) && defined(__x86_64__) && !defined(__FMA__) && !defined(CYL_NO_PRECISE) && \
     defined(__GNUC__) && !defined(__INTEL_COMPILER) && (!defined(__clang__) || __clang_major__ >= 11)
 #define CYL_FMA_DISPATCH 1
@@ -314,9 +314,7 @@ CYL_DEF const char *cyl_strerror(int code)
 }
 
 /* The body's types, names and constants, chosen where it uses them: CYL__IFL(x, y) is x in a
-   body whose working type L is double, else y; CYL__IFR likewise for the API's type R. The range
-   (N2), L = double (float): lower 2^-300 (2^-60), upper 2^900 (2^120); on the exact path r²|a|²
-   down to 2^-600 (2^-76). */
+   body whose working type L is double, else y; CYL__IFR likewise for the API's type R. */
 #define CYL__CAT(a, b) CYL__CAT_(a, b)
 #define CYL__CAT_(a, b) a##b
 #define CYL__SEL1(x, y) x
@@ -343,15 +341,14 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LFMA(a, b, c) CYL__IFL(CYL_FMA, CYL_FMAF)(a, b, c)
 #define CYL__LSPLIT CYL__IFL(134217729.0, 4097.0f) /* 2^27 + 1, 2^12 + 1 */
 #define CYL__LTINY CYL__IFL(4.9406564584124654e-324, 1.40129846e-45f) /* 2^-1074, 2^-149 */
-#define CYL__HOT_LO CYL__IFL(4.9090934652977266e-91, 8.67361738e-19f)
-#define CYL__HOT_HI CYL__IFL(8.452712498170644e270, 1.32922800e36f)
-#define CYL__COLD_LO CYL__IFL(2.4099198651028841e-181, 1.32348898e-23f)
+#define CYL__HOT_LO CYL__IFL(4.9090934652977266e-91, 8.67361738e-19f) /* range, N2: 2^-300, 2^-60 */
+#define CYL__HOT_HI CYL__IFL(8.452712498170644e270, 1.32922800e36f) /* 2^900, 2^120 */
+#define CYL__COLD_LO CYL__IFL(2.4099198651028841e-181, 1.32348898e-23f) /* scaled r²|a|²: 2^-600, 2^-76 */
 #define CYL__LINF (CYL__LMAX * 2)
 
-/* One body, included once per API with these parameters (the body #undefs them): CYL__RD 1 if
-   the API's type R is double, CYL__P private names, CYL__LD 1 if the working type L is. A
-   helper body (CYL__HELPER) is the API's in another working type or instruction set: where
-   CYL__HANDOFF names it and CYL__HANDOFF_IF holds, CYL_PRECISE calls go there, out of line (N9). */
+/* One body per API with these parameters (the body #undefs them): CYL__RD 1 if its type R is
+   double, CYL__LD 1 if its working type L is, CYL__P private names. A helper body (CYL__HELPER,
+   N9): an API's in another type or instruction set, taking CYL_PRECISE calls as CYL__HANDOFF_IF. */
 #ifndef CYL_NO_DOUBLE
 #define CYL__BODY 1
 #define CYL__RD 1
@@ -362,30 +359,6 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__HANDOFF_IF(want) ((want) > 0 && __builtin_cpu_supports("fma")) /* polish: N8 */
 #endif
 #include CYL_HEADER_FILENAME
-#if CYL_FMA_DISPATCH
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("fma"))), apply_to = function)
-#pragma float_control(push)
-#pragma clang fp contract(off)
-#else
-#pragma GCC push_options
-#pragma GCC target("fma")
-#pragma GCC optimize("fp-contract=off", "no-tree-slp-vectorize")
-#endif
-#define CYL__BODY 1 /* the double API's body with the FMA, private: its CYL_PRECISE calls */
-#define CYL__HELPER 1
-#define CYL__RD 1
-#define CYL__LD 1
-#define CYL__P(x) cyl__dx_##x
-#define CYL__LFASTFMA 1
-#include CYL_HEADER_FILENAME
-#if defined(__clang__)
-#pragma float_control(pop)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
-#endif
 #endif
 
 #ifndef CYL_NO_FLOAT
@@ -396,6 +369,9 @@ CYL_DEF const char *cyl_strerror(int code)
 #if !CYL_FLOAT_WIDE && !defined(CYL_NO_PRECISE)
 #define CYL__HANDOFF(x) cyl__fw_##x
 #define CYL__HANDOFF_IF(want) 1
+#elif CYL_FMA_DISPATCH
+#define CYL__HANDOFF(x) cyl__fx_##x
+#define CYL__HANDOFF_IF(want) __builtin_cpu_supports("fma")
 #endif
 #include CYL_HEADER_FILENAME
 #if !CYL_FLOAT_WIDE && !defined(CYL_NO_PRECISE)
@@ -405,6 +381,40 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__P(x) cyl__fw_##x
 #define CYL__LD 1
 #include CYL_HEADER_FILENAME
+#endif
+#endif
+
+#if CYL_FMA_DISPATCH /* the APIs' bodies built for the FMA, private: CYL_PRECISE calls (N9) */
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("fma"))), apply_to = function)
+#pragma float_control(push)
+#pragma clang fp contract(off)
+#else
+#pragma GCC push_options
+#pragma GCC target("fma")
+#pragma GCC optimize("fp-contract=off", "no-tree-slp-vectorize")
+#endif
+#define CYL__BODY 1
+#define CYL__HELPER 1
+#define CYL__RD 1
+#define CYL__LD 1
+#define CYL__P(x) cyl__dx_##x
+#define CYL__LFASTFMA 1
+#include CYL_HEADER_FILENAME
+#if !defined(CYL_NO_FLOAT) && CYL_FLOAT_WIDE
+#define CYL__BODY 1
+#define CYL__HELPER 1
+#define CYL__RD 0
+#define CYL__LD 1
+#define CYL__P(x) cyl__fx_##x
+#define CYL__LFASTFMA 1
+#include CYL_HEADER_FILENAME
+#endif
+#if defined(__clang__)
+#pragma float_control(pop)
+#pragma clang attribute pop
+#else
+#pragma GCC pop_options
 #endif
 #endif
 
@@ -428,19 +438,17 @@ CYL__OUT int CYL__HANDOFF(out)(const CYL__N(ray) *, const CYL__N(cylinder) *, un
 #endif
 
 /* The frame (N1): the inputs in L, scaled on the exact path (t, v there 2^et, 2^ev times the
-   frame's), and everything derived from them once. */
+   frame's), and everything derived from them once; tc: the exact path's closest approach. */
 typedef struct CYL__P(frame) {
     CYL__L w[3], wl[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, tlim, vlim, lo;
-    CYL__L s[3], m[3], aa, ad, mm, aww, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha;
-    CYL__L tc; /* the exact path's closest approach */
+    CYL__L s[3], m[3], aa, ad, mm, aww, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha, tc;
     int et, ev, exact, cold, par; /* cold: the exact path's (FMA products, unscaled output) */
 } CYL__P(frame);
 
 /* One crossing of the ray with the surface; h: ∓√(|a|²D) at a wall (entry −, exit +). */
 typedef struct CYL__P(cross) { CYL__L t, h; int part, ok, doubt; unsigned flags; } CYL__P(cross);
 
-static int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
-                        int want, CYL__N(hit) *hits);
+static int CYL__P(cold)(const CYL__N(ray) *, const CYL__N(cylinder) *, unsigned, int, CYL__N(hit) *);
 static void CYL__P(refine)(const CYL__P(frame) *f, CYL__L t[2], CYL__L s[2]);
 static CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap);
 
@@ -564,11 +572,9 @@ CYL__OUT int CYL__P(out)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
 CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                               unsigned opts, CYL__N(hit) *hit)
 { return !ray || !cyl || !hit ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 1, hit); }
-
 CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
                                   unsigned opts, CYL__N(hit) hits[2])
 { return !ray || !cyl || !hits ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 2, hits); }
-
 CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
 { return !ray || !cyl ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 0, (CYL__N(hit) *)0); }
 #endif
@@ -1186,9 +1192,9 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        rounding below that). A NaN or infinite bound certifies nothing. A contact inside the band
        goes there too: its roots move by u/√e. Each crossing the double API then emits takes N8's
        step (polish): its t errs by up to 36 ulps on the hot path, the tier promises 2; the float
-       API's, computed in double, is within 2^-29 of the root already. A helper body, out of line,
-       takes an API's CYL_PRECISE calls: the float API's in double where it computes in float
-       (CYL_FLOAT_WIDE 0; without double there is no such tier), and, on x86-64 built without the
-       FMA, the double API's built with it (CYL_FMA_DISPATCH) where the CPU has it: polish's exact
-       products each become one instruction, and with no contraction the answers are the same bits.
+       API's, computed in double, is within 2^-29 of the root already. A helper body takes an API's
+       CYL_PRECISE calls, out of line: the float API's in double where it computes in float (none
+       without double); on x86-64 built without the FMA, both APIs' built with it where the CPU
+       has it (CYL_FMA_DISPATCH; not the double API's occluded): polish's exact products one
+       instruction each, 3-operand forms, nothing contracted or vectorized: the same bits.
 */
