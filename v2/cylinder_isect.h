@@ -434,7 +434,7 @@ typedef struct CYL__N(cylinder) { CYL__R c[3], a[3], r, h; } CYL__N(cylinder);
 typedef struct CYL__N(hit) { CYL__R t, t_err, n[3], v; int part; unsigned flags; } CYL__N(hit);
 #endif
 #ifdef CYL__HANDOFF
-CYL__OUT int CYL__HANDOFF(out)(const CYL__N(ray) *, const CYL__N(cylinder) *, unsigned, int, CYL__N(hit) *);
+static int CYL__HANDOFF(out)(const CYL__N(ray) *, const CYL__N(cylinder) *, unsigned, int, CYL__N(hit) *);
 #endif
 
 /* The frame (N1): the inputs in L, scaled on the exact path (t, v there 2^et, 2^ev times the
