@@ -440,7 +440,7 @@ static int CYL__HANDOFF(out)(const CYL__N(ray) *, const CYL__N(cylinder) *, unsi
 /* The frame (N1): the inputs in L, scaled on the exact path (t, v there 2^et, 2^ev times the
    frame's), and everything derived from them once; tc: the exact path's closest approach. */
 typedef struct CYL__P(frame) {
-    CYL__L w[3], wl[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, tlim, vlim, lo;
+    CYL__L w[3], wl[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, vlim, lo;
     CYL__L s[3], m[3], aa, ad, mm, aww, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha, tc;
     int et, ev, exact, cold, par; /* cold: the exact path's (FMA products, unscaled output) */
 } CYL__P(frame);
@@ -549,7 +549,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2], f.d[2] = (CYL__L)ray->d[2];
     f.a[0] = (CYL__L)cyl->a[0], f.a[1] = (CYL__L)cyl->a[1], f.a[2] = (CYL__L)cyl->a[2];
     f.r = (CYL__L)cyl->r, f.H = (CYL__L)cyl->h * CYL__K(0.5);
-    f.tlim = (CYL__L)CYL__RMAX, f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX), f.lo = CYL__HOT_LO;
+    f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX), f.lo = CYL__HOT_LO;
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
     if (CYL__CERT(&f, opts) && sizeof(CYL__L) == sizeof(CYL__R)) { /* w exact, for polish */
         int i;
@@ -560,6 +560,8 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
     if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u)
         return CYL__P(cold)(ray, cyl, opts, want, hits);
+    if (sizeof(CYL__L) > sizeof(CYL__R)) /* t representable in R: in the range (in_range) */
+        f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);
     ok = CYL__P(answer)(&f, opts, want, hits);
     return CYL__CERT(&f, opts) && ok == CYL__DOUBT ? CYL__P(cold)(ray, cyl, opts, want, hits) : ok;
 }
@@ -674,12 +676,8 @@ CYL__INL int CYL__P(in_slab)(CYL__L t, const CYL__L s[2]) { return !(t < s[0]) &
 CYL__INL int CYL__P(near)(CYL__L x, CYL__L ex, CYL__L y, CYL__L ey)
 { return !(CYL__P(abs)(x - y) > ex + ey); }
 
-/* The t range, ends included, and t representable in R (the double API's hot path's t is). */
-CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t)
-{
-    int rep = (sizeof(CYL__L) == sizeof(CYL__R) && f->et == 0) || CYL__P(abs)(t) <= f->tlim;
-    return !(t < f->tmin) && !(t > f->tmax) && rep;
-}
+/* The t range, ends included; run and load_scaled keep it within R's (a t beyond is no hit). */
+CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t) { return !(t < f->tmin) && !(t > f->tmax); }
 
 /* Crossing k (0 entry, 1 exit) of the wall roots t and the slab s (N4): the open tube keeps a
    wall crossing inside the slab; the capped solid clips the wall interval with the slab (entry
@@ -1058,9 +1056,9 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     }
     f->r = CYL__LT(scale)((CYL__L)cyl->r, -kl), f->H = CYL__LT(scale)((CYL__L)cyl->h, -kl - 1);
     f->et = kl - kd, f->ev = kl;
-    f->tmin = CYL__LT(scale)((CYL__L)ray->tmin, -f->et), f->rmin = (CYL__L)ray->tmin;
-    f->tmax = CYL__LT(scale)((CYL__L)ray->tmax, -f->et), f->rmax = (CYL__L)ray->tmax;
-    f->tlim = CYL__LT(scale)((CYL__L)CYL__RMAX, -f->et);
+    m = CYL__LT(scale)((CYL__L)CYL__RMAX, -f->et); /* R's largest t */
+    f->tmin = CYL__P(max)(CYL__LT(scale)((CYL__L)ray->tmin, -f->et), -m), f->rmin = (CYL__L)ray->tmin;
+    f->tmax = CYL__P(min)(CYL__LT(scale)((CYL__L)ray->tmax, -f->et), m), f->rmax = (CYL__L)ray->tmax;
     f->vlim = CYL__P(min)((CYL__L)cyl->h * CYL__K(0.5), (CYL__L)CYL__RMAX);
     if (sizeof(CYL__L) == sizeof(CYL__R) && f->vlim * 2 > (CYL__L)cyl->h) /* h/2 rounded up */
         f->vlim = (CYL__L)CYL__P(toward0)((CYL__R)f->vlim);
