@@ -107,10 +107,10 @@
 
    ACCURACY
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
-   t_err held the exact t on all 510,492 float and 521,199 double hits; nothing misclassified
+   t_err held the exact t on all 510,492 float and 521,019 double hits; nothing misclassified
    beyond the band, default or CYL_PRECISE. t on well-conditioned hits: CYL_PRECISE within
-   0.5 ulps in every family, both APIs, at 444 (float) and 799 (double) instructions per
-   capped call, 3.7 and 6.8 times the end-point routine's (REPORT's headline; `make cost`).
+   0.5 ulps in every family, both APIs, at 430 (float) and 797 (double) instructions per
+   capped call, 3.6 and 6.7 times the end-point routine's (REPORT's headline; `make cost`).
    Default: float within 0.5 ulps; double within 0.5 on the tiny family, which the exact path
    answers (N8), and on the hot path within 7 ulps on the well family's walls, 14.4 on its
    caps, 35.9 on the huge family's caps (cancellation of z0 + Ha, N6), 271 for origins far
