@@ -1012,7 +1012,9 @@ CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, CYL__L t[2], CYL__L s[2])
     CYL__L gap = f->D > 0 ? CYL__LSQRT(f->aa * f->D) / f->A : 0; /* half the roots' distance */
     if (lo <= hi) s[0] = lo, s[1] = hi;
     if (f->par) return;
-    t[0] = CYL__P(polish)(f, f->tc - gap, CYL_SIDE, gap), t[1] = CYL__P(polish)(f, f->tc + gap, CYL_SIDE, gap);
+    t[0] = t[1] = f->tc; /* a contact without roots stays there */
+    if (gap > 0) t[0] = CYL__P(polish)(f, t[0] - gap, CYL_SIDE, gap),
+                 t[1] = CYL__P(polish)(f, t[1] + gap, CYL_SIDE, gap);
 }
 
 /* Validation in the documented order (the hot path sent what its range test refused). */

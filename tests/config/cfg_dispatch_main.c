@@ -30,69 +30,53 @@ static void skip_without_dispatch(void)
 #endif
 }
 
-/* One case through every option set and entry point of both units (P: f or d): the number of
-   calls that hit. */
-#define SAME_BITS(P)                                                                            \
-    static int same_bits_##P(const cyl##P##_ray *ray, const cyl##P##_cylinder *cyl,            \
-                             const char *family)                                               \
+/* One case of bench/cases.c (its values exact in T) through every option set and entry point
+   of both units (P: f or d, T its type): the number of calls that hit. */
+#define SAME_BITS(P, T)                                                                         \
+    static int same_bits_##P(const bench_case *c, const char *family)                          \
     {                                                                                           \
-        int k, want, hits = 0;                                                                  \
+        cyl##P##_ray ray;                                                                       \
+        cyl##P##_cylinder cyl;                                                                  \
+        int j, k, want, hits = 0;                                                               \
+        for (j = 0; j < 3; j++) {                                                               \
+            ray.o[j] = (T)c->o[j], ray.d[j] = (T)c->d[j];                                       \
+            cyl.c[j] = (T)c->c[j], cyl.a[j] = (T)c->a[j];                                       \
+        }                                                                                       \
+        ray.tmin = (T)c->tmin, ray.tmax = (T)c->tmax, cyl.r = (T)c->r, cyl.h = (T)c->h;         \
         for (k = 0; k < NOPTS; k++)                                                             \
             for (want = 0; want <= 2; want++) {                                                 \
                 cyl##P##_hit a[2], b[2];                                                        \
                 int ra, rb;                                                                     \
                 memset(a, 0, sizeof a), memset(b, 0, sizeof b);                                 \
-                ra = want == 0 ? cyl##P##_occluded(ray, cyl, opts[k])                           \
-                     : want == 1 ? cyl##P##_intersect(ray, cyl, opts[k], a)                     \
-                                 : cyl##P##_intersect_all(ray, cyl, opts[k], a);                \
-                rb = no_dispatch_##P(want, ray, cyl, opts[k], b);                               \
+                ra = want == 0 ? cyl##P##_occluded(&ray, &cyl, opts[k])                         \
+                     : want == 1 ? cyl##P##_intersect(&ray, &cyl, opts[k], a)                   \
+                                 : cyl##P##_intersect_all(&ray, &cyl, opts[k], a);              \
+                rb = no_dispatch_##P(want, &ray, &cyl, opts[k], b);                             \
                 TEST_ASSERT_EQUAL_INT_MESSAGE(rb, ra, family);                                  \
                 TEST_ASSERT_EQUAL_MEMORY_MESSAGE(b, a, sizeof a, family);                       \
                 hits += want > 0 && ra > 0;                                                     \
             }                                                                                   \
         return hits;                                                                            \
     }
-SAME_BITS(f)
-SAME_BITS(d)
+SAME_BITS(f, float)
+SAME_BITS(d, double)
 
-static void test_dispatch_gives_the_same_bits_double(void)
+/* Every family's cases in precision prec (24, 53) through same. */
+static void check_families(int prec, int (*same)(const bench_case *, const char *))
 {
     int fam, i, hits = 0;
     skip_without_dispatch();
     for (fam = 0; fam < BF_COUNT; fam++)
         for (i = 0; i < CASES_PER_FAMILY; i++) {
             bench_case c;
-            cyld_ray ray;
-            cyld_cylinder cyl;
-            bench_case_gen(fam, 53, 20261205u, (uint64_t)i, &c);
-            memcpy(ray.o, c.o, sizeof ray.o), memcpy(ray.d, c.d, sizeof ray.d);
-            ray.tmin = c.tmin, ray.tmax = c.tmax;
-            memcpy(cyl.c, c.c, sizeof cyl.c), memcpy(cyl.a, c.a, sizeof cyl.a);
-            cyl.r = c.r, cyl.h = c.h;
-            hits += same_bits_d(&ray, &cyl, bench_family_name(fam));
+            bench_case_gen(fam, prec, 20261205u, (uint64_t)i, &c);
+            hits += same(&c, bench_family_name(fam));
         }
     TEST_ASSERT_TRUE(hits > BF_COUNT * CASES_PER_FAMILY); /* the comparison saw hits */
 }
 
-static void test_dispatch_gives_the_same_bits_float(void)
-{
-    int fam, i, j, hits = 0;
-    skip_without_dispatch();
-    for (fam = 0; fam < BF_COUNT; fam++)
-        for (i = 0; i < CASES_PER_FAMILY; i++) {
-            bench_case c;
-            cylf_ray ray;
-            cylf_cylinder cyl;
-            bench_case_gen(fam, 24, 20261205u, (uint64_t)i, &c); /* values exact in float */
-            for (j = 0; j < 3; j++) {
-                ray.o[j] = (float)c.o[j], ray.d[j] = (float)c.d[j];
-                cyl.c[j] = (float)c.c[j], cyl.a[j] = (float)c.a[j];
-            }
-            ray.tmin = (float)c.tmin, ray.tmax = (float)c.tmax, cyl.r = (float)c.r, cyl.h = (float)c.h;
-            hits += same_bits_f(&ray, &cyl, bench_family_name(fam));
-        }
-    TEST_ASSERT_TRUE(hits > BF_COUNT * CASES_PER_FAMILY);
-}
+static void test_dispatch_gives_the_same_bits_double(void) { check_families(53, same_bits_d); }
+static void test_dispatch_gives_the_same_bits_float(void) { check_families(24, same_bits_f); }
 
 int main(void)
 {
