@@ -124,7 +124,7 @@
 
    LICENSE: MIT. Copyright (c) 2026 the cylinder_isect developers.
 */
-#if !defined(CYL__BODY)
+#if !defined(CYL__P) /* the header; with CYL__P defined, one body (below) */
 #ifndef CYLINDER_ISECT_H
 #define CYLINDER_ISECT_H
 
@@ -346,11 +346,10 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__COLD_LO CYL__IFL(2.4099198651028841e-181, 1.32348898e-23f) /* scaled r²|a|²: 2^-600, 2^-76 */
 #define CYL__LINF (CYL__LMAX * 2)
 
-/* One body per API with these parameters (the body #undefs them): CYL__RD 1 if its type R is
-   double, CYL__LD 1 if its working type L is, CYL__P private names. A helper body (CYL__HELPER,
-   N9): an API's in another type or instruction set, taking CYL_PRECISE calls as CYL__HANDOFF_IF. */
+/* One body per API, parameters (#undef'd by it): CYL__P its private names, CYL__RD 1 if its type
+   R is double, CYL__LD 1 if its working type L is. A helper body (CYL__HELPER, N9): an API's in
+   another type or instruction set, taking CYL_PRECISE calls as CYL__HANDOFF_IF. */
 #ifndef CYL_NO_DOUBLE
-#define CYL__BODY 1
 #define CYL__RD 1
 #define CYL__LD 1
 #define CYL__P(x) cyl__d_##x
@@ -362,7 +361,6 @@ CYL_DEF const char *cyl_strerror(int code)
 #endif
 
 #ifndef CYL_NO_FLOAT
-#define CYL__BODY 1
 #define CYL__RD 0
 #define CYL__P(x) cyl__f_##x
 #define CYL__LD CYL_FLOAT_WIDE
@@ -375,8 +373,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #endif
 #include CYL_HEADER_FILENAME
 #if !CYL_FLOAT_WIDE && !defined(CYL_NO_PRECISE)
-#define CYL__BODY 1 /* the float API's body in double, private: its CYL_PRECISE calls */
-#define CYL__HELPER 1
+#define CYL__HELPER 1 /* the float API's body in double, private: its CYL_PRECISE calls */
 #define CYL__RD 0
 #define CYL__P(x) cyl__fw_##x
 #define CYL__LD 1
@@ -394,7 +391,6 @@ CYL_DEF const char *cyl_strerror(int code)
 #pragma GCC target("fma")
 #pragma GCC optimize("fp-contract=off", "no-tree-slp-vectorize")
 #endif
-#define CYL__BODY 1
 #define CYL__HELPER 1
 #define CYL__RD 1
 #define CYL__LD 1
@@ -402,7 +398,6 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LFASTFMA 1
 #include CYL_HEADER_FILENAME
 #if !defined(CYL_NO_FLOAT) && CYL_FLOAT_WIDE
-#define CYL__BODY 1
 #define CYL__HELPER 1
 #define CYL__RD 0
 #define CYL__LD 1
@@ -420,7 +415,7 @@ CYL_DEF const char *cyl_strerror(int code)
 
 #endif /* CYLINDER_ISECT_H */
 
-#else /* CYL__BODY: one precision, written once */
+#else /* CYL__P: one precision's body, written once */
 
 /* The certified layer runs (N9); what answer returns when it is not sure. */
 #define CYL__CERT(f, opts) (((opts) & CYL_PRECISE) && !(f)->cold)
@@ -675,7 +670,6 @@ CYL__INL int CYL__P(in_slab)(CYL__L t, const CYL__L s[2]) { return !(t < s[0]) &
 /* N9: x and y not certainly farther apart than their bounds' sum (a NaN bound certifies none). */
 CYL__INL int CYL__P(near)(CYL__L x, CYL__L ex, CYL__L y, CYL__L ey)
 { return !(CYL__P(abs)(x - y) > ex + ey); }
-
 /* The t range, ends included; run and load_scaled keep it within R's (a t beyond is no hit). */
 CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t) { return !(t < f->tmin) && !(t > f->tmax); }
 
@@ -1115,7 +1109,6 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 }
 #endif
 
-#undef CYL__BODY
 #undef CYL__HELPER
 #undef CYL__HANDOFF
 #undef CYL__HANDOFF_IF
@@ -1126,7 +1119,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__DOUBT
 #undef CYL__CAP_PART
 #undef CYL__LFASTFMA
-#endif /* CYL__BODY */
+#endif /* CYL__P */
 
 /* NOTES (cited from the code as N1 .. N9); u is the working type's unit roundoff
    N1. One formulation (DESIGN.md of the project): w = o − c, s = a × d, m = a × w (cross
