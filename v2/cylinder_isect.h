@@ -41,7 +41,7 @@
    const char *cyl_strerror(int code)     a short English description of any return value.
 
    The hit. t; t_err: the exact intersection of the given (already rounded) inputs with the
-   reported part lies in [t − t_err, t + t_err] (a residual bound, N5); n: unit normal, facing
+   reported part lies in [t − t_err, t + t_err] (a rigorous bound, N5); n: unit normal, facing
    the ray origin (n·d <= 0) by default, the outward one with CYL_OUTWARD; v: axial coordinate,
    within [−h/2, h/2] (exactly ±h/2 on a cap; saturated at the largest finite value on an
    infinite tube); part: CYL_SIDE, CYL_CAP_LOW, CYL_CAP_HIGH; flags:
@@ -109,12 +109,11 @@
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
    t_err held the exact t on all 510,492 float and 521,019 double hits; nothing misclassified
    beyond the band, default or CYL_PRECISE. t on well-conditioned hits: CYL_PRECISE within
-   0.5 ulps in every family, both APIs, at 430 (float) and 797 (double) instructions per
-   capped call, 3.6 and 6.7 times the end-point routine's (REPORT's headline; `make cost`).
-   Default: float within 0.5 ulps; double within 0.5 on the tiny family, which the exact path
-   answers (N8), and on the hot path within 7 ulps on the well family's walls, 14.4 on its
-   caps, 35.9 on the huge family's caps (cancellation of z0 + Ha, N6), 271 for origins far
-   along the axis (thin): short of the 4 ulps aimed at, a plain tier's limit.
+   0.5 ulps in every family, both APIs, at 403 (float) and 797 (double) instructions per
+   capped call, 3.4 and 6.7 times the end-point routine's (REPORT's headline; `make cost`).
+   Default: float within 0.5 ulps; double within 0.5 on the tiny family (the exact path's,
+   N8), on the hot path within 7 ulps on the well family's walls, 14.4 on its caps, 35.9 on
+   the huge family's caps (z0 + Ha cancels, N6), 271 for origins far along the axis (thin).
    Per unit of the data's condition κ (o − c, d, a, r, h each moved by a relative u move t by
    κ·u·|t|; REPORT's ulps/κ) double errs by at most 1.8 on those families, 2.7 on all.
 
@@ -704,13 +703,25 @@ CYL__INL CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, i
 }
 
 /* ------------------------------------------------------------------ output and bound */
-/* t_err of a wall crossing (N5): the residual F = |y|² − r²|a|² and G = y·s at t, y = m + t·s,
-   with bounds EF, EG on their rounding; the root of the same crossing is within (|F| + EF)/
-   (|G| − EG) on the quadratic's near branch, else within the product-of-roots bound. */
+/* The plain layer's error (N9): its quadratic's at t is at most noise·(S + t²|a|²|d|²), S =
+   |a|²(|w|² + r²); a wall root t's, h = √(|a|²D), root_bound where that is below h/A. */
+CYL__INL CYL__L CYL__P(noise)(const CYL__P(frame) *f)
+{ return 128 * CYL__LU * (1 + CYL__LSQRT(f->ad / f->A)); }
+CYL__INL CYL__L CYL__P(root_bound)(const CYL__P(frame) *f, CYL__L t, CYL__L h)
+{ return CYL__P(noise)(f) * (f->aww + f->r2aa + t * t * f->ad) / h + 4 * CYL__LU * CYL__P(abs)(t); }
+
+/* t_err of a wall crossing (N5): root_bound on a wider L's hot path, else from the residual
+   F = |y|² − r²|a|² and G = y·s at t (y = m + t·s) and bounds EF, EG on their rounding: within
+   (|F| + EF)/(|G| − EG) on the quadratic's near branch, else the product-of-roots bound. */
 CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x)
 {
-    const CYL__L u = CYL__LU, ns = CYL__LSQRT(f->A), Es = 5 * u * CYL__LSQRT(f->ad);
-    CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb;
+    const CYL__L u = CYL__LU, h = CYL__P(abs)(x->h);
+    CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb, ns, Es;
+    if (sizeof(CYL__L) > sizeof(CYL__R) && !f->cold) {
+        Gb = CYL__P(root_bound)(f, x->t, h);
+        if (Gb * f->A <= h) return Gb;
+    }
+    ns = CYL__LSQRT(f->A), Es = 5 * u * CYL__LSQRT(f->ad);
     CYL__P(lin)(1, f->m, x->t, f->s, y);
     yy = CYL__P(dot)(y, y), ny = CYL__LSQRT(yy), F = yy - f->r2aa, G = CYL__P(dot)(y, f->s);
     Ey = CYL__K(7.5) * u * CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * (Es + 4 * u * ns) + 2 * u * ny;
@@ -804,11 +815,6 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsig
 }
 
 /* ------------------------------------------------------------------ certificates */
-/* The certified layer (CYL_PRECISE on the hot path, N9): the plain quadratic's error at t is
-   at most noise·(S + t²|a|²|d|²), S = |a|²(|w|² + r²). */
-CYL__INL CYL__L CYL__P(noise)(const CYL__P(frame) *f)
-{ return 128 * CYL__LU * (1 + CYL__LSQRT(f->ad / f->A)); }
-
 /* The tangent band: 1 unless D lies beyond the band's edges by more than its bound (a contact
    inside the band is the exact path's: its roots move by u/√e). */
 CYL__INL int CYL__P(band_doubt)(const CYL__P(frame) *f)
@@ -822,13 +828,12 @@ CYL__INL int CYL__P(band_doubt)(const CYL__P(frame) *f)
 CYL__INL int CYL__P(bounds)(const CYL__P(frame) *f, const CYL__L t[2], const CYL__L s[2],
                             CYL__L sq, CYL__L e[4])
 {
-    const CYL__L u = CYL__LU, k = CYL__P(noise)(f), S = f->aww + f->r2aa, z = CYL__P(abs)(f->zeta);
+    const CYL__L u = CYL__LU, z = CYL__P(abs)(f->zeta);
     const CYL__L es = 64 * u * (CYL__LSQRT(f->aww) + f->Ha) / z, ed = 64 * u * CYL__LSQRT(f->ad) / z;
-    CYL__L df0 = k * (S + t[0] * t[0] * f->ad), df1 = k * (S + t[1] * t[1] * f->ad);
-    e[0] = df0 / sq + 4 * u * CYL__P(abs)(t[0]), e[1] = df1 / sq + 4 * u * CYL__P(abs)(t[1]);
+    e[0] = CYL__P(root_bound)(f, t[0], sq), e[1] = CYL__P(root_bound)(f, t[1], sq);
     e[2] = CYL__P(abs)(s[0]) <= CYL__LMAX ? es + CYL__P(abs)(s[0]) * (ed + 2 * u) : 0;
     e[3] = CYL__P(abs)(s[1]) <= CYL__LMAX ? es + CYL__P(abs)(s[1]) * (ed + 2 * u) : 0;
-    return !(CYL__P(max)(df0, df1) * f->A <= sq * sq) || !(ed <= CYL__K(0.5)); /* ζ: first order */
+    return !(CYL__P(max)(e[0], e[1]) * f->A <= sq && ed <= CYL__K(0.5)); /* ζ: first order */
 }
 
 /* The crossings in t order; occluded and intersect stop at the first, and nothing is emitted
@@ -1145,7 +1150,9 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        e.g. |δ(a × w)|₁ <= 3u·√6|a||w|). f(t + δ) = f + 2gδ + Aδ² exactly: where g has the
        crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F| + EF)/(|G| −
        EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap: the plane's
-       residual over |ζ| less its bound. The float API computed in double adds t's rounding.
+       residual over |ζ| less its bound. The float API computed in double adds t's rounding;
+       its wall root's bound is N9's a-priori one where first order (cheaper; in double's u,
+       so the residual's tightness would vanish in float's rounding anyway).
    N6. The plain tier's limits, from rounding what each decision compares: e = D/(r²A) carries
        a few u·(1 + |o − c|/r)(1 + 2ρ/r) (ρ: the line's distance from the axis): the tangent
        band's edges blur by that for far origins; a rim, u·(|o − c| + |t d| + h)/h of the half
@@ -1173,21 +1180,21 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        roots start at t_c ± √(|a|²D)/A (the plain C cancels for an origin on the wall), each
        refined while its steps stay within that half gap; without roots, a contact is at t_c.
    N9. The certified layer (CYL_PRECISE on the hot path): each comparison an answer depends on
-       (tangent band, rims, t range, entry and exit, for both crossings whatever the entry point)
-       is taken only where its operands lie farther apart than their bounds' sum; else the exact
-       path answers. The bounds are a priori, from magnitudes the hot path has: s and m carry about
+       (tangent band, rims, t range, entry and exit, for both crossings whatever the entry point) is
+       taken only where its operands lie farther apart than their bounds' sum; else the exact path
+       answers. The bounds are a priori, from magnitudes the hot path has: s and m carry about
        u|a||d| and u|a||w| (w's own rounding included), so A, B, C, D, and the quadratic each root
-       solves (the root pair uses √(|a|²D), not B² − AC), err at t by at most k(S + t²|a|²|d|²), S
-       = |a|²(|w|² + r²), k = 128u(1 + |a||d|/|s|) (the last term: P's and that identity's error
+       solves (the root pair uses √(|a|²D), not B² − AC), err at t by at most k(S + t²|a|²|d|²), S =
+       |a|²(|w|² + r²), k = 128u(1 + |a||d|/|s|) (the last term: P's and that identity's error
        through s). A root moves by that over √(|a|²D) (|f'|/2), plus 4u|t| for the formula, while
-       it stays below |a|²D/A (first order; else the exact path); D by k·S·A/|a|²; a slab end by
+       this is below √(|a|²D)/A (first order; else the exact path); D by k·S·A/|a|²; a slab end by
        64u(|a||w| + Ha + |t||a||d|)/|ζ| + 2u|t|, while |ζ| > 128u|a||d| (the plain ζ may be all
        rounding below that). A NaN or infinite bound certifies nothing. A contact inside the band
        goes there too: its roots move by u/√e. Each crossing the double API then emits takes N8's
        step (polish): its t errs by up to 36 ulps on the hot path, the tier promises 2; the float
        API's, computed in double, is within 2^-29 of the root already. A helper body takes an API's
-       CYL_PRECISE calls, out of line: the float API's in double where it computes in float (none
-       without double); on x86-64 built without the FMA, both APIs' built with it where the CPU
-       has it (CYL_FMA_DISPATCH; not the double API's occluded): polish's exact products one
-       instruction each, 3-operand forms, nothing contracted or vectorized: the same bits.
+       CYL_PRECISE calls out of line: the float API's in double where it computes in float (none
+       without double); on x86-64 built without the FMA, both APIs' built with it where the CPU has
+       it (CYL_FMA_DISPATCH; not the double API's occluded): polish's exact products one instruction
+       each, nothing contracted or vectorized: the same bits.
 */
