@@ -236,6 +236,11 @@
 #define CYL__B(f) f
 #define CYL__LAUNDER(p) (void)0
 #endif
+#if defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 8) /* gcc -O2 keeps 3-trip loops */
+#define CYL__UNROLL _Pragma("GCC unroll 3")
+#else
+#define CYL__UNROLL
+#endif
 #ifndef CYL__OPAQUE
 #define CYL__OPAQUE(x) (void)0
 #endif
@@ -547,7 +552,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
     if (CYL__CERT(&f, opts) && sizeof(CYL__L) == sizeof(CYL__R)) { /* w exact, for polish */
         int i;
-        for (i = 0; i < 3; i++)
+        CYL__UNROLL for (i = 0; i < 3; i++)
             f.wl[i] = CYL__P(sum_err)((CYL__L)ray->o[i], -(CYL__L)cyl->c[i], f.w[i]);
     }
     ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
@@ -897,6 +902,8 @@ CYL__INL void CYL__P(acc_mul)(CYL__P(acc) *q, CYL__L x, CYL__L y)
     CYL__L p = x * y;
     CYL__P(acc_add)(q, p), q->c += CYL__P(prod_err)(x, y, p);
 }
+CYL__INL CYL__P(acc) CYL__P(acc_prod)(CYL__L x, CYL__L y) /* a sum's first term (0 + p is not p) */
+{ CYL__P(acc) q; q.s = x * y, q.c = CYL__P(prod_err)(x, y, q.s); return q; }
 /* The sum as a pair hi + lo, hi = rounded sum. */
 CYL__INL CYL__L CYL__P(acc_pair)(const CYL__P(acc) *q, CYL__L *lo)
 {
@@ -905,26 +912,13 @@ CYL__INL CYL__L CYL__P(acc_pair)(const CYL__P(acc) *q, CYL__L *lo)
     return h;
 }
 
-/* x = w + t·d as pairs xh + xl (w exact as w + wl). */
-CYL__INL void CYL__P(point)(const CYL__P(frame) *f, CYL__L t, CYL__L xh[3], CYL__L xl[3])
-{
-    CYL__P(acc) q;
-    int i;
-    for (i = 0; i < 3; i++) {
-        q.s = f->w[i], q.c = f->wl[i];
-        CYL__P(acc_mul)(&q, t, f->d[i]);
-        xh[i] = CYL__P(acc_pair)(&q, &xl[i]);
-    }
-}
-
 /* |a| as a pair sa (√ of |a|²'s compensated sum, one Newton step) and −r²|a|² as ra: its
    rounded product, that product's error, the error of r²|a|² (N8). */
 CYL__INL void CYL__P(norm_a)(const CYL__P(frame) *f, CYL__L sa[2], CYL__L ra[3])
 {
     CYL__L aah, aal, p, r2 = f->r * f->r;
-    CYL__P(acc) aa = {0, 0};
-    int i;
-    for (i = 0; i < 3; i++) CYL__P(acc_mul)(&aa, f->a[i], f->a[i]);
+    CYL__P(acc) aa = CYL__P(acc_prod)(f->a[0], f->a[0]);
+    CYL__P(acc_mul)(&aa, f->a[1], f->a[1]), CYL__P(acc_mul)(&aa, f->a[2], f->a[2]);
     aah = CYL__P(acc_pair)(&aa, &aal);
     sa[0] = CYL__LSQRT(aah), p = sa[0] * sa[0];
     sa[1] = ((aah - p) - CYL__P(prod_err)(sa[0], sa[0], p) + aal) / (2 * sa[0]);
@@ -937,18 +931,21 @@ CYL__INL void CYL__P(norm_a)(const CYL__P(frame) *f, CYL__L sa[2], CYL__L ra[3])
 CYL__INL CYL__L CYL__P(resid)(const CYL__P(frame) *f, const CYL__L ra[3], CYL__L t, CYL__L *gp)
 {
     CYL__L xh[3], xl[3], yh, yl, g = 0;
-    CYL__P(acc) q, F = {0, 0};
+    CYL__P(acc) q, F;
     int i;
-    CYL__P(point)(f, t, xh, xl);
-    for (i = 0; i < 3; i++) { /* y = a × x, componentwise as a pair, into |y|² */
+    F.s = ra[0], F.c = ra[1] - ra[2];
+    CYL__UNROLL for (i = 0; i < 3; i++) { /* x = w + t·d as pairs xh + xl (w exact as w + wl) */
+        q.s = f->w[i], q.c = f->wl[i];
+        CYL__P(acc_mul)(&q, t, f->d[i]);
+        xh[i] = CYL__P(acc_pair)(&q, &xl[i]);
+    }
+    CYL__UNROLL for (i = 0; i < 3; i++) { /* y = a × x, componentwise as a pair, into |y|² */
         const int i1 = i == 2 ? 0 : i + 1, i2 = i == 0 ? 2 : i - 1;
-        q.s = q.c = 0;
-        CYL__P(acc_mul)(&q, f->a[i1], xh[i2]), CYL__P(acc_mul)(&q, -f->a[i2], xh[i1]);
+        q = CYL__P(acc_prod)(f->a[i1], xh[i2]), CYL__P(acc_mul)(&q, -f->a[i2], xh[i1]);
         q.c += f->a[i1] * xl[i2] - f->a[i2] * xl[i1];
         yh = CYL__P(acc_pair)(&q, &yl);
         CYL__P(acc_mul)(&F, yh, yh), F.c += 2 * yh * yl, g += yh * f->s[i];
     }
-    CYL__P(acc_add)(&F, ra[0]), F.c += ra[1], F.c -= ra[2];
     *gp = g;
     return F.s + F.c;
 }
@@ -957,9 +954,11 @@ CYL__INL CYL__L CYL__P(resid)(const CYL__P(frame) *f, const CYL__L ra[3], CYL__L
 CYL__INL void CYL__P(axial)(const CYL__P(frame) *f, CYL__P(acc) *z, CYL__P(acc) *ze)
 {
     int i;
-    for (i = 0; i < 3; i++)
-        CYL__P(acc_mul)(z, f->a[i], f->w[i]), z->c += f->a[i] * f->wl[i],
-        CYL__P(acc_mul)(ze, f->a[i], f->d[i]);
+    *z = CYL__P(acc_prod)(f->a[0], f->w[0]), *ze = CYL__P(acc_prod)(f->a[0], f->d[0]);
+    CYL__UNROLL for (i = 0; i < 3; i++) {
+        if (i) CYL__P(acc_mul)(z, f->a[i], f->w[i]), CYL__P(acc_mul)(ze, f->a[i], f->d[i]);
+        z->c += f->a[i] * f->wl[i];
+    }
 }
 
 /* The exact path's z0 and ζ (compensated sums) and, off the parallel rule, D = (g² − AF)/|a|²
@@ -968,7 +967,7 @@ CYL__INL void CYL__P(axial)(const CYL__P(frame) *f, CYL__P(acc) *z, CYL__P(acc) 
 CYL__COLD void CYL__P(exact_frame)(CYL__P(frame) *f)
 {
     CYL__L sa[2], ra[3], F, g;
-    CYL__P(acc) z = {0, 0}, ze = {0, 0};
+    CYL__P(acc) z, ze;
     CYL__P(axial)(f, &z, &ze);
     f->z0 = z.s + z.c, f->zeta = ze.s + ze.c;
     if (f->par) return;
@@ -983,7 +982,7 @@ CYL__COLD void CYL__P(exact_frame)(CYL__P(frame) *f)
 CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap)
 {
     CYL__L v = t, dt, g, sa[2], ra[3], H, Hh, zh, zl;
-    CYL__P(acc) F = {0, 0}, Z = {0, 0};
+    CYL__P(acc) F, Z;
     int it;
     CYL__P(norm_a)(f, sa, ra);
     if (part != CYL_SIDE) { /* a·w + H|a| + tζ on the low plane, ζ = a·d summed first */
