@@ -107,10 +107,10 @@
 
    ACCURACY
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
-   t_err held the exact t on all 510,492 float and 521,019 double hits; nothing misclassified
+   t_err held the exact t on all 510,492 float and 521,307 double hits; nothing misclassified
    beyond the band, default or CYL_PRECISE. t on well-conditioned hits: CYL_PRECISE within
-   0.5 ulps in every family, both APIs, at 403 (float) and 797 (double) instructions per
-   capped call, 3.4 and 6.7 times the end-point routine's (REPORT's headline; `make cost`).
+   0.5 ulps in every family, both APIs, at 406 (float) and 668 (double) instructions per
+   capped call, 3.4 and 5.7 times the end-point routine's (REPORT's headline; `make cost`).
    Default: float within 0.5 ulps; double within 0.5 on the tiny family (the exact path's,
    N8), on the hot path within 7 ulps on the well family's walls, 14.4 on its caps, 35.9 on
    the huge family's caps (z0 + Ha cancels, N6), 271 for origins far along the axis (thin).
@@ -721,18 +721,17 @@ CYL__INL CYL__L CYL__P(root_bound)(const CYL__P(frame) *f, CYL__L t, CYL__L h)
 CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x)
 {
     const CYL__L u = CYL__LU, h = CYL__P(abs)(x->h);
-    CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb, ns, Es;
+    CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb, nd;
     if (sizeof(CYL__L) > sizeof(CYL__R) && !f->cold) {
         Gb = CYL__P(root_bound)(f, x->t, h);
         if (Gb * f->A <= h) return Gb;
     }
-    ns = CYL__LSQRT(f->A), Es = 5 * u * CYL__LSQRT(f->ad);
+    nd = CYL__LSQRT(f->ad); /* |a||d| >= |s|: it stands for |s| in every rounding bound */
     CYL__P(lin)(1, f->m, x->t, f->s, y);
     yy = CYL__P(dot)(y, y), ny = CYL__LSQRT(yy), F = yy - f->r2aa, G = CYL__P(dot)(y, f->s);
-    Ey = CYL__K(7.5) * u * CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * (Es + 4 * u * ns) + 2 * u * ny;
+    Ey = CYL__K(7.5) * u * CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * (9 * u * nd) + 2 * u * ny;
     Fb = CYL__P(abs)(F) * (1 + 2 * u) + Ey * (2 * ny + Ey) + 4 * u * yy + 6 * u * f->r2aa;
-    EG = Ey * ns + (ny + Ey) * Es + 4 * u * ny * ns;
-    EA = Es * (2 * ns + Es) + 4 * u * f->A;
+    EG = (Ey + 9 * u * (ny + Ey)) * nd, EA = 15 * u * f->ad;
     /* G with the crossing's sign (entry negative), any sign for a tangent contact */
     Gb = (x->flags & CYL_F_TANGENT ? CYL__P(abs)(G) : x->flags & CYL_F_INSIDE ? G : -G) - EG;
     if (Gb > 0 && Gb * Gb >= (f->A + EA) * Fb) return Fb / Gb * (1 + 32 * u);
