@@ -80,6 +80,7 @@ typedef struct ev_stats {
     int stab_worst_index;
     double nrm_max;             /* max |n - n_exact| (about the angle), margin above the band */
     int terr_checked, terr_fail;            /* exact t outside [t - t_err, t + t_err] */
+    double terr_ulp_max;        /* widest t_err in ulps of the exact t, well-conditioned hits */
     int terr_fail_index;
     int all_miscls, all_miscls_out;   /* intersect_all: count, part or crossing differs */
     int occ_miscls, occ_miscls_out;   /* occluded differs from "the reference has a hit" */

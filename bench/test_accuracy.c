@@ -195,6 +195,37 @@ static void test_terr_contains_exact_t(void)
     TEST_ASSERT_EQUAL_INT_MESSAGE(0, fails, msg);
 }
 
+/* The float API's t_err on the default path, in ulps of the exact t over the well-conditioned
+   hits of the benign families: computed in double (CYL_FLOAT_WIDE), its bounds lie far below
+   float's rounding, which t_err then adds, so t_err is that rounding, within an ulp (v1's and
+   v2's, whose N5 takes N9's root bound only where it is below 2^-7 of float's ulp); computed
+   in float, the residual bound in float's own u, within TERR_ULPS_NARROW. */
+#define TERR_ULPS_WIDE 1.0
+#define TERR_ULPS_NARROW 4096.0
+static void test_default_terr_float_width(void)
+{
+    static const int fams[] = {BF_WELL, BF_FAR, BF_HUGE, BF_TINY, BF_AXIS, BF_TRANGE};
+#if defined(CYL_FLOAT_WIDE) && !CYL_FLOAT_WIDE
+    const double lim = TERR_ULPS_NARROW;
+#else
+    const double lim = TERR_ULPS_WIDE;
+#endif
+    int vi = find_variant(24, "lib"), f, caps, n = 0, wf = 0, wc = 0;
+    double worst = 0;
+    TEST_ASSERT_TRUE(vi >= 0);
+    evaluate_all();
+    for (f = 0; f < (int)(sizeof fams / sizeof fams[0]); ++f)
+        for (caps = 0; caps < 2; ++caps) {
+            const ev_stats *st = &stats[0][fams[f]][caps][vi];
+            n += st->cond_n;
+            if (!(st->terr_ulp_max <= worst)) worst = st->terr_ulp_max, wf = fams[f], wc = caps;
+        }
+    snprintf(msg, sizeof msg, "float lib: t_err up to %.3g ulps (%s caps=%d), limit %g", worst,
+             bench_family_name(wf), wc, lim);
+    TEST_ASSERT_TRUE(n > 1000);
+    TEST_ASSERT_TRUE_MESSAGE(worst <= lim, msg);
+}
+
 static void check_targets(int prec, const char *variant, const int *families, int nfam,
                           double ulps_max)
 {
@@ -465,6 +496,7 @@ int main(void)
     RUN_TEST(test_reference_t_within_is_exact);
     RUN_TEST(test_families_are_reproducible);
     RUN_TEST(test_terr_contains_exact_t);
+    RUN_TEST(test_default_terr_float_width);
     RUN_TEST(test_default_path_float);
     RUN_TEST(test_default_path_double);
     RUN_TEST(test_precise_float);

@@ -109,7 +109,7 @@
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
    t_err held the exact t on all 510,492 float and 521,307 double hits; nothing misclassified
    beyond the band, default or CYL_PRECISE. t on well-conditioned hits: CYL_PRECISE within
-   0.5 ulps in every family, both APIs, at 406 (float) and 668 (double) instructions per
+   0.5 ulps in every family, both APIs, at 408 (float) and 674 (double) instructions per
    capped call, 3.4 and 5.7 times the end-point routine's (REPORT's headline; `make cost`).
    Default: float within 0.5 ulps; double within 0.5 on the tiny family (the exact path's,
    N8), on the hot path within 7 ulps on the well family's walls, 14.4 on its caps, 35.9 on
@@ -715,23 +715,25 @@ CYL__INL CYL__L CYL__P(noise)(const CYL__P(frame) *f)
 CYL__INL CYL__L CYL__P(root_bound)(const CYL__P(frame) *f, CYL__L t, CYL__L h)
 { return CYL__P(noise)(f) * (f->aww + f->r2aa + t * t * f->ad) / h + 4 * CYL__LU * CYL__P(abs)(t); }
 
-/* t_err of a wall crossing (N5): root_bound on a wider L's hot path, else from the residual
-   F = |y|² − r²|a|² and G = y·s at t (y = m + t·s) and bounds EF, EG on their rounding: within
-   (|F| + EF)/(|G| − EG) on the quadratic's near branch, else the product-of-roots bound. */
+/* t_err of a wall crossing (N5): root_bound on a wider L's hot path where far below R's ulp,
+   else from the residual F = |y|² − r²|a|² and G = y·s at t (y = m + t·s) and bounds EF, EG
+   on their rounding: (|F| + EF)/(|G| − EG) on the near branch, else the product-of-roots one. */
 CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x)
 {
     const CYL__L u = CYL__LU, h = CYL__P(abs)(x->h);
-    CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb, nd;
+    CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb, ns, Es;
     if (sizeof(CYL__L) > sizeof(CYL__R) && !f->cold) {
-        Gb = CYL__P(root_bound)(f, x->t, h);
-        if (Gb * f->A <= h) return Gb;
+        Gb = CYL__P(root_bound)(f, x->t, h); /* first order, and 2^-7 of R's ulp of t */
+        if (Gb * f->A <= h && Gb <= CYL__P(abs)(x->t) * (CYL__L)CYL__IFR(DBL_EPSILON, FLT_EPSILON) / 128)
+            return Gb;
     }
-    nd = CYL__LSQRT(f->ad); /* |a||d| >= |s|: it stands for |s| in every rounding bound */
+    ns = CYL__LSQRT(f->A), Es = 5 * u * CYL__LSQRT(f->ad); /* s's rounding is u|a||d|'s */
     CYL__P(lin)(1, f->m, x->t, f->s, y);
     yy = CYL__P(dot)(y, y), ny = CYL__LSQRT(yy), F = yy - f->r2aa, G = CYL__P(dot)(y, f->s);
-    Ey = CYL__K(7.5) * u * CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * (9 * u * nd) + 2 * u * ny;
+    Ey = CYL__K(7.5) * u * CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * (Es + 4 * u * ns) + 2 * u * ny;
     Fb = CYL__P(abs)(F) * (1 + 2 * u) + Ey * (2 * ny + Ey) + 4 * u * yy + 6 * u * f->r2aa;
-    EG = (Ey + 9 * u * (ny + Ey)) * nd, EA = 15 * u * f->ad;
+    EG = Ey * ns + (ny + Ey) * Es + 4 * u * ny * ns; /* |s| itself where it scales: steep rays */
+    EA = Es * (2 * ns + Es) + 4 * u * f->A;
     /* G with the crossing's sign (entry negative), any sign for a tangent contact */
     Gb = (x->flags & CYL_F_TANGENT ? CYL__P(abs)(G) : x->flags & CYL_F_INSIDE ? G : -G) - EG;
     if (Gb > 0 && Gb * Gb >= (f->A + EA) * Fb) return Fb / Gb * (1 + 32 * u);
@@ -1149,8 +1151,8 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F| + EF)/(|G| −
        EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap: the plane's
        residual over |ζ| less its bound. The float API computed in double adds t's rounding;
-       its wall root's bound is N9's a-priori one where first order (cheaper; in double's u,
-       so the residual's tightness would vanish in float's rounding anyway).
+       its wall root's bound is N9's a-priori one where first order and below 2^-7 of float's
+       ulp of t (cheaper, and as tight once float's rounding is added; far origins' is not).
    N6. The plain tier's limits, from rounding what each decision compares: e = D/(r²A) carries
        a few u·(1 + |o − c|/r)(1 + 2ρ/r) (ρ: the line's distance from the axis): the tangent
        band's edges blur by that for far origins; a rim, u·(|o − c| + |t d| + h)/h of the half
