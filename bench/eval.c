@@ -509,8 +509,8 @@ void ev_eval(const ev_variant *v, const ev_set *s, ev_stats *st)
             }
             if (v->kind == EV_LIB && !(v->opts & CYL_NO_ERRBOUND)) {
                 st->terr_checked++;
-                if (ref == &s->ref[i] && ev_well_conditioned(s, i) && fabs(T) > 0) {
-                    double w = o.t_err / ldexp(1.0, ilogb(T) - (s->prec - 1)); /* ulps of T */
+                if (ref == &s->ref[i] && ev_well_conditioned(s, i)) {
+                    double w = o.t_err / cyl_ref_ulp(rh, s->prec);
                     if (!(w <= st->terr_ulp_max)) st->terr_ulp_max = w;
                 }
                 if (!cyl_ref_t_within(rh, o.t, o.t_err)) {

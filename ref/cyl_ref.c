@@ -504,20 +504,17 @@ int cyl_ref_t_within(const cyl_ref_hit *h, double t, double t_err)
     return ok;
 }
 
+double cyl_ref_ulp(const cyl_ref_hit *h, int prec)
+{
+    double T = h->t[0];
+    int p = prec == 24 ? 24 : 53, emin = prec == 24 ? -149 : -1074, e = emin + p;
+    if (T < 0 || T > 0) (void)frexp(T, &e);
+    return ldexp(1.0, e - p > emin ? e - p : emin);
+}
+
 double cyl_ref_ulps(const cyl_ref_hit *h, double t, int prec)
 {
-    double T = h->t[0], ulp, diff;
-    int e;
-    if (prec == 24) {
-        (void)frexp(T, &e);
-        ulp = ldexp(1.0, (e - 24 > -149 ? e - 24 : -149));
-    } else {
-        (void)frexp(T, &e);
-        ulp = ldexp(1.0, (e - 53 > -1074 ? e - 53 : -1074));
-    }
-    if (!(T < 0 || T > 0)) ulp = prec == 24 ? ldexp(1.0, -149) : ldexp(1.0, -1074);
-    diff = ((t - h->t[0]) - h->t[1]) - h->t[2];
-    return diff / ulp;
+    return (((t - h->t[0]) - h->t[1]) - h->t[2]) / cyl_ref_ulp(h, prec);
 }
 
 #ifndef CYL_NO_FLOAT

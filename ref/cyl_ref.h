@@ -91,8 +91,9 @@ int cyl_ref_intersect(const cyl_ref_case *in, cyl_ref_result *res);
 /* Exact: 1 when the reference t of h lies in [t − t_err, t + t_err], else 0. */
 int cyl_ref_t_within(const cyl_ref_hit *h, double t, double t_err);
 
-/* (t − exact t) in units of the last place of the exact t at precision prec (24 or 53),
-   with the subnormal ulp as a floor. */
+/* The unit in the last place of the exact t at precision prec (24 or 53), with the subnormal
+   ulp as a floor; and (t − exact t) in those units. */
+double cyl_ref_ulp(const cyl_ref_hit *h, int prec);
 double cyl_ref_ulps(const cyl_ref_hit *h, double t, int prec);
 
 #ifndef CYL_NO_FLOAT

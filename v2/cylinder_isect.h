@@ -714,6 +714,7 @@ CYL__INL CYL__L CYL__P(noise)(const CYL__P(frame) *f)
 { return 128 * CYL__LU * (1 + CYL__LSQRT(f->ad / f->A)); }
 CYL__INL CYL__L CYL__P(root_bound)(const CYL__P(frame) *f, CYL__L t, CYL__L h)
 { return CYL__P(noise)(f) * (f->aww + f->r2aa + t * t * f->ad) / h + 4 * CYL__LU * CYL__P(abs)(t); }
+CYL__INL int CYL__P(first_order)(const CYL__P(frame) *f, CYL__L e, CYL__L h) { return e * f->A <= h; }
 
 /* t_err of a wall crossing (N5): root_bound on a wider L's hot path where far below R's ulp,
    else from the residual F = |y|² − r²|a|² and G = y·s at t (y = m + t·s) and bounds EF, EG
@@ -724,7 +725,7 @@ CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *
     CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb, ns, Es;
     if (sizeof(CYL__L) > sizeof(CYL__R) && !f->cold) {
         Gb = CYL__P(root_bound)(f, x->t, h); /* first order, and 2^-7 of R's ulp of t */
-        if (Gb * f->A <= h && Gb <= CYL__P(abs)(x->t) * (CYL__L)CYL__IFR(DBL_EPSILON, FLT_EPSILON) / 128)
+        if (CYL__P(first_order)(f, Gb, h) && Gb <= CYL__P(abs)(x->t) * (CYL__L)CYL__IFR(DBL_EPSILON, FLT_EPSILON) / 128)
             return Gb;
     }
     ns = CYL__LSQRT(f->A), Es = 5 * u * CYL__LSQRT(f->ad); /* s's rounding is u|a||d|'s */
@@ -839,7 +840,7 @@ CYL__INL int CYL__P(bounds)(const CYL__P(frame) *f, const CYL__L t[2], const CYL
     e[0] = CYL__P(root_bound)(f, t[0], sq), e[1] = CYL__P(root_bound)(f, t[1], sq);
     e[2] = CYL__P(abs)(s[0]) <= CYL__LMAX ? es + CYL__P(abs)(s[0]) * (ed + 2 * u) : 0;
     e[3] = CYL__P(abs)(s[1]) <= CYL__LMAX ? es + CYL__P(abs)(s[1]) * (ed + 2 * u) : 0;
-    return !(CYL__P(max)(e[0], e[1]) * f->A <= sq && ed <= CYL__K(0.5)); /* ζ: first order */
+    return !(CYL__P(first_order)(f, CYL__P(max)(e[0], e[1]), sq) && ed <= CYL__K(0.5)); /* and ζ */
 }
 
 /* The crossings in t order; occluded and intersect stop at the first, and nothing is emitted
@@ -954,12 +955,10 @@ CYL__INL CYL__L CYL__P(resid)(const CYL__P(frame) *f, const CYL__L ra[3], CYL__L
 /* z0 = a·w (w exact as w + wl) and ζ = a·d as compensated sums (N8). */
 CYL__INL void CYL__P(axial)(const CYL__P(frame) *f, CYL__P(acc) *z, CYL__P(acc) *ze)
 {
-    int i;
     *z = CYL__P(acc_prod)(f->a[0], f->w[0]), *ze = CYL__P(acc_prod)(f->a[0], f->d[0]);
-    CYL__UNROLL for (i = 0; i < 3; i++) {
-        if (i) CYL__P(acc_mul)(z, f->a[i], f->w[i]), CYL__P(acc_mul)(ze, f->a[i], f->d[i]);
-        z->c += f->a[i] * f->wl[i];
-    }
+    CYL__P(acc_mul)(z, f->a[1], f->w[1]), CYL__P(acc_mul)(z, f->a[2], f->w[2]);
+    CYL__P(acc_mul)(ze, f->a[1], f->d[1]), CYL__P(acc_mul)(ze, f->a[2], f->d[2]);
+    z->c += CYL__P(dot)(f->a, f->wl);
 }
 
 /* The exact path's z0 and ζ (compensated sums) and, off the parallel rule, D = (g² − AF)/|a|²
