@@ -101,6 +101,9 @@ ifeq ($(V),2)
 $(eval $(call TESTS_CFG_RUNNER,no_dispatch_float,tests/test_float.c,-DCYL_FMA_DISPATCH=0,c))
 $(eval $(call TESTS_CFG_RUNNER,no_dispatch_double,tests/test_double.c,-DCYL_FMA_DISPATCH=0,c))
 $(eval $(call TESTS_CFG_RUNNER,dispatch,tests/config/cfg_dispatch_main.c tests/config/cfg_dispatch_other.c bench/cases.c,-Ibench -O2 -std=gnu99,c))
+# and the pairs (N1) as structs, as targets without x86-64's or AArch64's vectors form them,
+# giving the same bits as the vectors here.
+$(eval $(call TESTS_CFG_RUNNER,pair_struct,tests/config/cfg_dispatch_main.c tests/config/cfg_dispatch_other.c bench/cases.c,-Ibench -O2 -std=gnu99 -DCFG_PAIR_STRUCT,c))
 endif
 ifeq ($(HOST_FMA),1)
 $(eval $(call TESTS_CFG_RUNNER,fma_float,tests/test_float.c,-mfma,c))

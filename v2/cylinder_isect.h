@@ -244,6 +244,19 @@
 #ifndef CYL__OPAQUE
 #define CYL__OPAQUE(x) (void)0
 #endif
+/* A pair of L (N1): a vector on x86-64 and AArch64, else a struct run lane by lane (CYL__EACH). */
+#if (defined(__GNUC__) || defined(__clang__)) && (defined(__SSE2__) || defined(__aarch64__)) && \
+    !defined(CYL__PAIR_STRUCT)
+#define CYL__PAIR(L, name) typedef L name __attribute__((vector_size(2 * sizeof(L))))
+#define CYL__EACH(x) x
+#define CYL__V(p) (p)
+#define CYL__LANE(p, i) (p)[i]
+#else
+#define CYL__PAIR(L, name) typedef struct { L v[2]; } name
+#define CYL__EACH(x) do { int k_ = 0; x; k_ = 1; x; } while (0)
+#define CYL__V(p) (p).v[k_]
+#define CYL__LANE(p, i) (p).v[i]
+#endif
 #if defined(__AVX__) /* the VEX form: no SSE/AVX transition */
 #define CYL__VEX(x) x
 #else
@@ -302,19 +315,12 @@ static inline double cyl__sqrt(double x) { CYL__ROOT(x, "sd", "d"); return x; }
 
 CYL_DEF const char *cyl_strerror(int code)
 {
-    switch (code) {
-    case CYL_HIT: return "hit";
-    case CYL_MISS: return "miss";
-    case CYL_E_NULL: return "a pointer argument is NULL";
-    case CYL_E_NONFINITE: return "a coordinate of o, d, c or a is NaN or infinite";
-    case CYL_E_ZERO_DIR: return "the ray direction d is the zero vector";
-    case CYL_E_ZERO_AXIS: return "the cylinder axis a is the zero vector";
-    case CYL_E_RADIUS: return "the radius is not a positive finite number";
-    case CYL_E_HEIGHT: return "the height is not positive (NaN or <= 0)";
-    case CYL_E_TRANGE: return "the t range is empty or NaN (tmin > tmax)";
-    case CYL_E_OPTION: return "unknown or compiled-out option bit";
-    default: return "unknown cylinder_isect return code";
-    }
+    static const char *const msg[] = {"unknown or compiled-out option bit", /* CYL_E_OPTION (-8) */
+        "the t range is empty or NaN (tmin > tmax)", "the height is not positive (NaN or <= 0)",
+        "the radius is not a positive finite number", "the cylinder axis a is the zero vector",
+        "the ray direction d is the zero vector", "a coordinate of o, d, c or a is NaN or infinite",
+        "a pointer argument is NULL", "miss", "hit"};
+    return code < CYL_E_OPTION || code > CYL_HIT ? "unknown cylinder_isect return code" : msg[code + 8];
 }
 
 /* The body's types, names and constants, chosen where it uses them: CYL__IFL(x, y) is x in a
@@ -458,18 +464,14 @@ CYL__INL CYL__L CYL__P(min)(CYL__L x, CYL__L y) { return x < y ? x : y; }
 CYL__INL CYL__L CYL__P(dot)(const CYL__L x[3], const CYL__L y[3])
 { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
 CYL__INL void CYL__P(cross3)(const CYL__L x[3], const CYL__L y[3], CYL__L z[3])
-{
-    z[0] = x[1] * y[2] - x[2] * y[1];
-    z[1] = x[2] * y[0] - x[0] * y[2];
-    z[2] = x[0] * y[1] - x[1] * y[0];
-}
+{ z[0] = x[1] * y[2] - x[2] * y[1], z[1] = x[2] * y[0] - x[0] * y[2], z[2] = x[0] * y[1] - x[1] * y[0]; }
 /* z = x·p + y·q, componentwise, written out (no loop: the frame stays in registers). */
 CYL__INL void CYL__P(lin)(CYL__L p, const CYL__L x[3], CYL__L q, const CYL__L y[3], CYL__L z[3])
-{
-    z[0] = x[0] * p + y[0] * q;
-    z[1] = x[1] * p + y[1] * q;
-    z[2] = x[2] * p + y[2] * q;
-}
+{ z[0] = x[0] * p + y[0] * q, z[1] = x[1] * p + y[1] * q, z[2] = x[2] * p + y[2] * q; }
+/* A pair (N1) and the pair (x, y). */
+CYL__PAIR(CYL__L, CYL__P(pair));
+CYL__INL CYL__P(pair) CYL__P(pr)(CYL__L x, CYL__L y)
+{ CYL__P(pair) p; CYL__LANE(p, 0) = x, CYL__LANE(p, 1) = y; return p; }
 /* x + y − s for s = x + y rounded, exactly (Knuth's TwoSum). */
 CYL__INL CYL__L CYL__P(sum_err)(CYL__L x, CYL__L y, CYL__L s)
 {
@@ -529,7 +531,7 @@ CYL__INL void CYL__P(cross_exact)(const CYL__L x[3], const CYL__L y[3], CYL__L z
 /* ------------------------------------------------------------------ entry points */
 CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits);
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f);
-CYL__INL CYL__L CYL__P(steep)(const CYL__P(frame) *f);
+CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f);
 
 /* The hot path: the frame, one range test, the answer; what the test refuses (invalid, out of
    range, near the axis direction, an unknown option) goes to the exact path. want: 0 occluded,
@@ -588,23 +590,27 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
     CYL__L ml[3], S, L2, lo, hi;
-    if (f->cold) CYL__P(cross_exact)(f->a, f->d, f->s);
-    else CYL__P(cross3)(f->a, f->d, f->s);
-    f->zeta = CYL__P(dot)(f->a, f->d);
-    f->A = CYL__P(dot)(f->s, f->s);
-    f->ad = f->A + f->zeta * f->zeta; /* |a|²|d|² */
-    if (f->cold) { /* m after s's dots: fewer values live; w = w + wl exactly there */
-        CYL__P(cross_exact)(f->a, f->w, f->m);
-        CYL__P(cross3)(f->a, f->wl, ml);
-        CYL__P(lin)(1, f->m, 1, ml, f->m);
-    } else {
-        CYL__P(cross3)(f->a, f->w, f->m);
+    CYL__P(pair) dw[3], sm[3], q[3], z, ab, pm; /* lanes: (d, w) give (s, m) */
+    int i;
+    dw[0] = CYL__P(pr)(f->d[0], f->w[0]), dw[1] = CYL__P(pr)(f->d[1], f->w[1]), dw[2] = CYL__P(pr)(f->d[2], f->w[2]);
+    if (f->cold) { /* s, m to 2u each; w = w + wl exactly there */
+        CYL__P(cross_exact)(f->a, f->d, f->s), CYL__P(cross_exact)(f->a, f->w, f->m);
+        CYL__P(cross3)(f->a, f->wl, ml), CYL__P(lin)(1, f->m, 1, ml, f->m);
+        for (i = 0; i < 3; i++) sm[i] = CYL__P(pr)(f->s[i], f->m[i]);
+    } else { /* both cross products at once */
+        CYL__EACH(CYL__V(sm[0]) = f->a[1] * CYL__V(dw[2]) - f->a[2] * CYL__V(dw[1]));
+        CYL__EACH(CYL__V(sm[1]) = f->a[2] * CYL__V(dw[0]) - f->a[0] * CYL__V(dw[2]));
+        CYL__EACH(CYL__V(sm[2]) = f->a[0] * CYL__V(dw[1]) - f->a[1] * CYL__V(dw[0]));
     }
-    f->z0 = CYL__P(dot)(f->a, f->w);
-    f->P = CYL__P(dot)(f->w, f->s);
-    f->mm = CYL__P(dot)(f->m, f->m);
+    CYL__UNROLL for (i = 0; i < 3; i++)
+        f->s[i] = CYL__LANE(sm[i], 0), f->m[i] = CYL__LANE(sm[i], 1), q[i] = CYL__P(pr)(f->w[i], f->m[i]);
+    CYL__EACH(CYL__V(z) = f->a[0] * CYL__V(dw[0]) + f->a[1] * CYL__V(dw[1]) + f->a[2] * CYL__V(dw[2]));
+    CYL__EACH(CYL__V(ab) = f->s[0] * CYL__V(sm[0]) + f->s[1] * CYL__V(sm[1]) + f->s[2] * CYL__V(sm[2]));
+    CYL__EACH(CYL__V(pm) = CYL__V(q[0]) * CYL__V(sm[0]) + CYL__V(q[1]) * CYL__V(sm[1]) + CYL__V(q[2]) * CYL__V(sm[2]));
+    f->zeta = CYL__LANE(z, 0), f->z0 = CYL__LANE(z, 1), f->A = CYL__LANE(ab, 0), f->B = CYL__LANE(ab, 1);
+    f->P = CYL__LANE(pm, 0), f->mm = CYL__LANE(pm, 1);
+    f->ad = f->A + f->zeta * f->zeta; /* |a|²|d|² */
     f->aww = f->mm + f->z0 * f->z0;   /* |a|²|w|² */
-    f->B = CYL__P(dot)(f->m, f->s);
     f->aa = CYL__P(dot)(f->a, f->a);
     f->r2 = f->r * f->r;
     f->r2aa = f->r2 * f->aa;
@@ -617,7 +623,10 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     S = f->aww + f->r2aa, L2 = S * f->ad; /* L2 >= |a|²·|a|²D, L2/|a|² >= D */
     /* min and max pass a NaN on only as their second operand: h's is Ha's, the others' S's */
     lo = CYL__P(min)(CYL__P(min)(f->r * f->sqaa, f->r2aa), CYL__P(min)(f->ad, f->Ha));
-    if (!f->cold) lo = CYL__P(min)(CYL__P(min)(CYL__P(steep)(f), f->r2 * f->A), lo);
+    /* the hot path's margin for the exact path: parallel rays and, unless L makes the inputs'
+       products exact, those whose s or m loses 8 bits (N6): d or o − c within 2^-8 of the axis */
+    if (!f->cold) lo = CYL__P(min)(CYL__P(min)(sizeof(CYL__L) > sizeof(CYL__R) ? CYL__P(parallel)(f) :
+        CYL__P(min)(65536 * f->A - f->ad, 65536 * f->mm - f->aww), f->r2 * f->A), lo);
     hi = CYL__P(max)(CYL__P(max)(S, L2), L2 / f->aa);
     return lo >= f->lo && hi <= CYL__HOT_HI && !(f->Ha - f->H > CYL__LMAX);
 }
@@ -627,15 +636,6 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
    ray is parallel where it is <= 0. */
 CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f)
 { return f->A / ((CYL__L)CYL__PARA * (CYL__L)CYL__PARA) - f->ad; }
-
-/* Rays for the exact path, as a margin below lo: parallel ones and, unless L makes the inputs'
-   products exact, those whose plain s or m loses over 8 bits (N6): d or o − c within 2^-8 of
-   the axis direction. */
-CYL__INL CYL__L CYL__P(steep)(const CYL__P(frame) *f)
-{
-    if (sizeof(CYL__L) > sizeof(CYL__R)) return CYL__P(parallel)(f);
-    return CYL__P(min)(65536 * f->A - f->ad, 65536 * f->mm - f->aww);
-}
 
 /* The wall (N3, N6): 0 the ray line misses the infinite tube, 1 a tangent contact (e within the
    band), 2 two crossings; e = D/(r²A). */
@@ -1129,8 +1129,10 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
    N1. One formulation (DESIGN.md of the project): w = o − c, s = a × d, m = a × w (cross
        products, never projections: no cancellation for rays near the axis direction or
        origins far along it), A = s·s, B = m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d,
-       Ha = (h/2)|a|. The exact path forms s and m with Kahan's FMA difference of products
-       (Jeannerod, Louvet, Muller, Math. Comp. 82, 2013), each component within 2u of itself.
+       Ha = (h/2)|a|, formed in pairs (s, m), (ζ, z0), (A, B), (P, |m|²): vectors where the
+       compiler has them, one instruction for two (same roundings, same order, same bits). The
+       exact path forms s and m with Kahan's FMA difference of products (Jeannerod, Louvet,
+       Muller, Math. Comp. 82, 2013), each component within 2u of itself.
    N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², r²A (else D
        can be subnormal), Ha and |a|⁴|d|²(|w|² + r²) against one range; every NaN, infinity, zero
        or out-of-range input fails it and goes to the exact path, which validates in the
@@ -1149,9 +1151,8 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        e.g. |δ(a × w)|₁ <= 3u·√6|a||w|). f(t + δ) = f + 2gδ + Aδ² exactly: where g has the
        crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F| + EF)/(|G| −
        EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap: the plane's
-       residual over |ζ| less its bound. The float API computed in double adds t's rounding;
-       its wall root's bound is N9's a-priori one where first order and below 2^-7 of float's
-       ulp of t (cheaper, and as tight once float's rounding is added; far origins' is not).
+       residual over |ζ| less its bound. The float API computed in double adds t's rounding; its
+       wall root's bound is N9's where first order and below 2^-7 of float's ulp of t (cheaper).
    N6. The plain tier's limits, from rounding what each decision compares: e = D/(r²A) carries
        a few u·(1 + |o − c|/r)(1 + 2ρ/r) (ρ: the line's distance from the axis): the tangent
        band's edges blur by that for far origins; a rim, u·(|o − c| + |t d| + h)/h of the half
