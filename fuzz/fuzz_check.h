@@ -203,7 +203,16 @@ static void fz_cross(const fz_real *x, const fz_real *y, fz_real *z)
   z[1] = x[2] * y[0] - x[0] * y[2];
   z[2] = x[0] * y[1] - x[1] * y[0];
 }
-static fz_real fz_norm(const fz_real *x) { return sqrtl(fz_dot(x, x)); }
+/* |x|, prescaled by its largest component: no overflow or underflow where long double is
+ * double (armhf), whose range the squares of extreme double inputs leave. */
+static fz_real fz_norm(const fz_real *x)
+{
+  fz_real m = fmaxl(fmaxl(fabsl(x[0]), fabsl(x[1])), fabsl(x[2])), y[3];
+  int i;
+  if (!(m > 0) || !isfinite(m)) return sqrtl(fz_dot(x, x));
+  for (i = 0; i < 3; i++) y[i] = x[i] / m;
+  return m * sqrtl(fz_dot(y, y));
+}
 static fz_real fz_abssum(const fz_real *x) { return fabsl(x[0]) + fabsl(x[1]) + fabsl(x[2]); }
 
 static int fz_isfinite_all(const fz_real *x, int n)
