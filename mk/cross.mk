@@ -68,19 +68,20 @@ cxx-compat: $(CXX_COMPAT_OKS)
 # qemu needs no sysroot: aarch64, armhf (32-bit, VFPv3 without FMA, so the library's fmaf
 # fallback runs) and s390x (big-endian). Same warnings as the native builds; ends with
 # run-tests.sh's "N passed, M failed" line. CROSS_ARCHS picks architectures; CROSS_FUZZ=0 leaves
-# the fuzz runners out; CROSS_TEST_CFLAGS is appended to the test builds (diagnosis only).
+# the fuzz runners out; CROSS_TEST_CFLAGS is appended to the test builds (diagnosis only). With
+# V=2 the same on v2's header (.ci/run): its pairs (N1) are vectors on aarch64, structs on the others.
 CROSS_ARCHS       ?= aarch64 armhf s390x
 CROSS_FUZZ        ?= 1
 CROSS_TEST_CFLAGS ?=
 CROSS_DIR         := $(BUILD)/cross
-CROSS_CC_aarch64    := aarch64-linux-gnu-gcc
+CROSS_CC_aarch64    := aarch64-linux-gnu-gcc $(V2_IQUOTE)
 CROSS_QEMU_aarch64  := qemu-aarch64-static
-CROSS_CC_armhf      := arm-linux-gnueabihf-gcc
+CROSS_CC_armhf      := arm-linux-gnueabihf-gcc $(V2_IQUOTE)
 CROSS_QEMU_armhf    := qemu-arm-static
 # 32-bit glibc on a 64-bit host file system: readdir needs 64-bit offsets under qemu (without
 # them the fuzz replay finds no corpus file and runs 0 tests).
 CROSS_EXTRA_armhf   := -D_FILE_OFFSET_BITS=64
-CROSS_CC_s390x      := s390x-linux-gnu-gcc
+CROSS_CC_s390x      := s390x-linux-gnu-gcc $(V2_IQUOTE)
 CROSS_QEMU_s390x    := qemu-s390x-static
 # GCC on s390x in ISO C mode (-std=c99 implies -fexcess-precision=standard) evaluates float
 # arithmetic in double (FLT_EVAL_METHOD 1, for glibc's float_t): the header refuses that with
@@ -96,8 +97,8 @@ CROSS_FUZZ_FLAGS  := -Ifuzz -DFUZZ_CORPUS_DIR='"$(CURDIR)/fuzz/corpus"' -DFUZZ_G
 # (LDBL_MANT_DIG 53, same exponent range): its "exact" cross products of extreme double inputs
 # underflow there, and 12 corpus inputs fail the checker, not the library.
 CROSS_SKIP_armhf  := replay
-CROSS_TEST_HDRS   := cylinder_isect.h $(wildcard tests/*.h tests/*.inc)
-CROSS_FUZZ_HDRS   := cylinder_isect.h $(wildcard fuzz/*.h)
+CROSS_TEST_HDRS   := $(HDR) $(wildcard tests/*.h tests/*.inc)
+CROSS_FUZZ_HDRS   := $(HDR) $(wildcard fuzz/*.h)
 
 # $(1) architecture
 define CROSS_ARCH_RULES
