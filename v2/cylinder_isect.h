@@ -320,7 +320,7 @@ CYL_DEF const char *cyl_strerror(int code)
         "the radius is not a positive finite number", "the cylinder axis a is the zero vector",
         "the ray direction d is the zero vector", "a coordinate of o, d, c or a is NaN or infinite",
         "a pointer argument is NULL", "miss", "hit"};
-    return code < CYL_E_OPTION || code > CYL_HIT ? "unknown cylinder_isect return code" : msg[code + 8];
+    return code < CYL_E_OPTION || code > CYL_HIT ? "unknown cylinder_isect return code" : msg[code - CYL_E_OPTION];
 }
 
 /* The body's types, names and constants, chosen where it uses them: CYL__IFL(x, y) is x in a

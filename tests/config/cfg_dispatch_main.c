@@ -59,7 +59,7 @@ static void skip_without_dispatch(void)
                 ra = want == 0 ? cyl##P##_occluded(&ray, &cyl, opts[k])                         \
                      : want == 1 ? cyl##P##_intersect(&ray, &cyl, opts[k], a)                   \
                                  : cyl##P##_intersect_all(&ray, &cyl, opts[k], a);              \
-                rb = other_##P(want, &ray, &cyl, opts[k], b);                             \
+                rb = other_##P(want, &ray, &cyl, opts[k], b);                                   \
                 TEST_ASSERT_EQUAL_INT_MESSAGE(rb, ra, family);                                  \
                 TEST_ASSERT_EQUAL_MEMORY_MESSAGE(b, a, sizeof a, family);                       \
                 hits += want > 0 && ra > 0;                                                     \
