@@ -11,6 +11,9 @@
       markers. TIMING.csv may be missing. When the benchmark's RESULTS.json (`make report`)
       exists, its ns/call on the "well" family is shown next to ours for the configurations it
       also runs.
+  cross.py gates SIZES.csv
+      Prints the size limits v2 must meet before it replaces v1 (issue 30) beside the figures
+      of SIZES.csv, and which it meets.
   cross.py lint-doc DEVIATIONS.txt TIDY-CHECKS.txt DOC.md MISRA-FINDINGS.txt
       Writes the MISRA deviations (with their counts at the last misra-check) and the
       clang-tidy checks into DOC.md between the lint markers."""
@@ -245,7 +248,35 @@ def lint_doc(dev, tidy, doc, raw):
     block = "\n".join(out)
     replace_block(doc, "<!-- lint:begin", "<!-- lint:end -->", block)
 
-COMMANDS = {"stack": (stack, 2, 2), "table": (table, 4, 5), "lint-doc": (lint_doc, 4, 4)}
+# Issue 30's limits: (target, config, precision, what, limit in bytes, description).
+GATES = [
+    ("x86_64", "two_apis", "f", "bytes", 20 * 1024, "cylf_intersect(CAPS) + cyld_intersect(0), one unit"),
+    ("m4f", "open", "f", "bytes", 4 * 1024, "open tube, default options"),
+    ("m4f", "open", "f", "stack", 320, "its deepest path's stack"),
+    ("m4f", "minimal", "f", "bytes", 2 * 1024, "CYL_TRUSTED|CYL_NO_NORMAL|CYL_NO_ERRBOUND"),
+    ("m4f", "caps_pair", "f", "bytes", 6 * 1024, "intersect(CAPS) + occluded"),
+]
+
+
+def gates(sizes_csv):
+    with open(sizes_csv) as f:
+        rows = {(r["target"], r["config"], r["precision"]): r for r in csv.DictReader(f)}
+    print("| target | configuration | measured | limit | met |")
+    print("|---|---|---:|---:|---|")
+    for t, c, p, what, limit, desc in GATES:
+        r = rows.get((t, c, p))
+        got = None
+        if r:
+            m = re.match(r"\d+", r[what])
+            got = int(m.group(0)) if m else None
+        unit = "B" if what == "bytes" else "B of stack"
+        shown = f"{r[what]} {unit}" if r else "not built"
+        met = "yes" if got is not None and got <= limit and "+" not in (r[what] if r else "") else "no"
+        desc = desc.replace("|", "\\|")
+        print(f"| {t} | {c} ({p}): {desc} | {shown} | {limit} | {met} |")
+
+
+COMMANDS = {"stack": (stack, 2, 2), "gates": (gates, 1, 1), "table": (table, 4, 5), "lint-doc": (lint_doc, 4, 4)}
 
 
 def main():
