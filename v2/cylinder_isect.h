@@ -427,8 +427,9 @@ CYL_DEF const char *cyl_strerror(int code)
 
 #else /* CYL__P: one precision's body, written once */
 
-/* The certified layer runs (N9); what answer returns when it is not sure. */
-#define CYL__CERT(f, opts) (((opts) & CYL_PRECISE) && !(f)->cold)
+/* The certified layer runs (N9): CYL_PRECISE asked for and compiled in (it folds away
+   without, opts constant or not); what answer returns when it is not sure. */
+#define CYL__CERT(f, opts) (((opts) & CYL__SUPPORTED & CYL_PRECISE) && !(f)->cold)
 #define CYL__DOUBT (-100)
 /* Which cap plane slab end k lies on (a macro: gcc 12 folded the inline function less well). */
 #define CYL__CAP_PART(f, k) (((k) == 0) == !((f)->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH)
@@ -609,8 +610,7 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     CYL__EACH(CYL__V(pm) = CYL__V(q[0]) * CYL__V(sm[0]) + CYL__V(q[1]) * CYL__V(sm[1]) + CYL__V(q[2]) * CYL__V(sm[2]));
     f->zeta = CYL__LANE(z, 0), f->z0 = CYL__LANE(z, 1), f->A = CYL__LANE(ab, 0), f->B = CYL__LANE(ab, 1);
     f->P = CYL__LANE(pm, 0), f->mm = CYL__LANE(pm, 1);
-    f->ad = f->A + f->zeta * f->zeta; /* |a|²|d|² */
-    f->aww = f->mm + f->z0 * f->z0;   /* |a|²|w|² */
+    f->ad = f->A + f->zeta * f->zeta, f->aww = f->mm + f->z0 * f->z0; /* |a|²|d|², |a|²|w|² */
     f->aa = CYL__P(dot)(f->a, f->a);
     f->r2 = f->r * f->r;
     f->r2aa = f->r2 * f->aa;
