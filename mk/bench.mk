@@ -9,6 +9,8 @@
 #                 no committed file changes and no `make readme`, v1's figures stay v1's
 #   make insn     instructions per call of every variant and set under callgrind, alone
 #                 (printed; with V=2, of $(HDR))
+#   make correction  how many hits a correction step at t_err > K ulps would run on, and the
+#                 error it would leave (bench/correction.c; with V=2, of $(HDR))
 BENCH_BUILD  := $(BUILD)/bench
 BENCH_SRCS   := bench/eval.c bench/cases.c ref/cyl_ref.c
 BENCH_HDRS   := $(HDR) bench/eval.h bench/cases.h bench/alt_formulations.h ref/cyl_ref.h
@@ -44,7 +46,7 @@ REPORT_OUT   := --md $(REPORT_DIR)/REPORT.md --png $(REPORT_DIR)/error_vs_time.p
 else
 REPORT_OUT   := --md bench/REPORT.md --png bench/error_vs_time.png --doc docs/accuracy.md
 endif
-DEPS_GOALS_bench := report insn
+DEPS_GOALS_bench := report insn correction
 
 $(BENCH_BUILD)/unity.o: $(UNITY_C) | unity
 	@mkdir -p $(@D)
@@ -85,13 +87,23 @@ $(BENCH_BUILD)/probe: bench/probe.c $(BENCH_SRCS) $(BENCH_HDRS)
 	@mkdir -p $(@D)
 	$(GCC) $(BENCH_WARN) -O2 $(BENCH_INC) $< $(BENCH_SRCS) $(BENCH_LIBS) -o $@
 
+# The default tier's t_err against its error: what a correction step at t_err > K ulps would
+# run on and leave (bench/correction.c), built as the report's binary is.
+$(BENCH_BUILD)/correction: bench/correction.c $(BENCH_SRCS) $(BENCH_HDRS)
+	@mkdir -p $(@D)
+	$(GCC) $(BENCH_WARN) $(BENCH_OPT) $(BENCH_INC) $< $(BENCH_SRCS) $(BENCH_LIBS) -o $@
+
+.PHONY: correction
+correction: deps $(BENCH_BUILD)/correction
+	$(BENCH_BUILD)/correction --seed $(BENCH_SEED) --n $(BENCH_N)
+
 # alt_formulations.h is used by other code (the viewer): strict C with clang and strict C++.
-$(BENCH_BUILD)/alt_check.stamp: bench/alt_formulations.h $(HDR) bench/bench.c bench/probe.c $(BENCH_SRCS) $(BENCH_HDRS)
+$(BENCH_BUILD)/alt_check.stamp: bench/alt_formulations.h $(HDR) bench/bench.c bench/probe.c bench/correction.c $(BENCH_SRCS) $(BENCH_HDRS)
 	@mkdir -p $(@D)
 	echo '#include "bench/alt_formulations.h"' | $(CLANG) -x c $(WARN_C) -I. -fsyntax-only -
 	echo '#include "bench/alt_formulations.h"' | $(CXX_GCC) -x c++ $(WARN_CXX) -I. -fsyntax-only -
 	echo '#include "cyl_ref.h"' | $(CXX_GCC) -x c++ $(WARN_CXX) -I. -Iref -fsyntax-only -
-	$(CLANG) $(WARN_C) $(BENCH_INC) -fsyntax-only $(BENCH_SRCS) bench/bench.c bench/probe.c
+	$(CLANG) $(WARN_C) $(BENCH_INC) -fsyntax-only $(BENCH_SRCS) bench/bench.c bench/probe.c bench/correction.c
 	@touch $@
 
 CHECK_PREREQS += $(BENCH_BUILD)/bench $(BENCH_BUILD)/probe $(BENCH_BUILD)/alt_check.stamp
