@@ -1075,11 +1075,11 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     int rc = CYL__P(validate)(ray, cyl, opts);
     if (rc) return rc;
     CYL__P(load_scaled)(&f, ray, cyl);
-    if (!CYL__P(derive)(&f)) {
+    while (!CYL__P(derive)(&f)) { /* one call: it is inlined once */
+        if (!f.exact) return CYL_MISS;
         f.r = CYL__P(max)(f.r, CYL__LSQRT(f.lo) * 2);
         f.H = CYL__P(max)(f.H, f.lo * 2);
         f.exact = 0;
-        if (!CYL__P(derive)(&f)) return CYL_MISS;
     }
     f.par = CYL__P(parallel)(&f) <= 0;
     if (f.exact) CYL__P(exact_frame)(&f);
