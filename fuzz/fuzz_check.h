@@ -213,6 +213,17 @@ static fz_real fz_norm(const fz_real *x)
   for (i = 0; i < 3; i++) y[i] = x[i] / m;
   return m * sqrtl(fz_dot(y, y));
 }
+/* x/|x| from the prescaled components: no subnormal |x| (where long double is double, a norm
+ * of subnormal components keeps only the bits of its subnormal result, 2^-39 of them for an
+ * axis of 2^-1036, which the unit axis would carry into every distance from it). */
+static void fz_unit(const fz_real *x, fz_real *u)
+{
+  fz_real m = fmaxl(fmaxl(fabsl(x[0]), fabsl(x[1])), fabsl(x[2])), y[3], n;
+  int i;
+  for (i = 0; i < 3; i++) y[i] = m > 0 && isfinite(m) ? x[i] / m : x[i];
+  n = sqrtl(fz_dot(y, y));
+  for (i = 0; i < 3; i++) u[i] = y[i] / n;
+}
 static fz_real fz_abssum(const fz_real *x) { return fabsl(x[0]) + fabsl(x[1]) + fabsl(x[2]); }
 
 static int fz_isfinite_all(const fz_real *x, int n)
@@ -357,12 +368,9 @@ typedef struct fz_geo {
 
 static void fz_geometry(const fz_prob *p, fz_geo *g)
 {
-  fz_real na = fz_norm(p->a);
   int i;
-  for (i = 0; i < 3; i++) {
-    g->ah[i] = p->a[i] / na;
-    g->w[i] = p->o[i] - p->c[i];
-  }
+  fz_unit(p->a, g->ah);
+  for (i = 0; i < 3; i++) g->w[i] = p->o[i] - p->c[i];
   fz_cross(g->ah, p->d, g->axd);
   fz_cross(g->ah, g->w, g->axw);
   g->nd = fz_norm(p->d);
