@@ -565,7 +565,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     if (sizeof(CYL__L) > sizeof(CYL__R)) /* t representable in R: in the range (in_range) */
         f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);
     ok = CYL__P(answer)(&f, opts, want, hits);
-    return CYL__CERT(&f, opts) && ok == CYL__DOUBT ? CYL__P(cold)(ray, cyl, opts, want, hits) : ok;
+    return ok == CYL__DOUBT ? CYL__P(cold)(ray, cyl, opts, want, hits) : ok;
 }
 
 #ifdef CYL__HELPER /* the handoff's target: one out-of-line copy for every call site */
