@@ -761,9 +761,9 @@ CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, uns
 {
     CYL__L as[3], len, g;
     if (x->part == CYL_SIDE) {
+        g = 1 / (f->sqaa * f->A); /* over |a||s|²: |n| = r|a|, not r|a|²|s|² (N5) */
         CYL__P(cross3)(f->a, f->s, as);
-        g = f->P * f->aa;
-        CYL__P(lin)(g, f->s, -x->h, as, n);
+        CYL__P(lin)(f->P * g * f->aa, f->s, -x->h * g, as, n);
         len = CYL__P(dot)(n, n);
         if (!(len >= CYL__LTINY * CYL__K(4503599627370496.0) && len <= CYL__LMAX * CYL__LU)) {
             int e; /* |n|² out of the range; zero where a contact's D and P vanished (N6) */
