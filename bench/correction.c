@@ -62,7 +62,7 @@ int main(int argc, char **argv)
                     ev_run(&ev_variants[vi], &s, i, &o);
                     if (o.rc != CYL_HIT || o.part != h->part) continue;
                     err = fabs(cyl_ref_ulps(h, o.t, precs[p]));
-                    ulp = ldexp(1.0, ilogb(h->t[0]) - (precs[p] - 1));
+                    ulp = cyl_ref_ulp(h, precs[p]);
                     hits++;
                     if (err > worst) worst = err;
                     for (k = 0; k < NK; ++k) {

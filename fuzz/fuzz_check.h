@@ -203,24 +203,31 @@ static void fz_cross(const fz_real *x, const fz_real *y, fz_real *z)
   z[1] = x[2] * y[0] - x[0] * y[2];
   z[2] = x[0] * y[1] - x[1] * y[0];
 }
-/* |x|, prescaled by its largest component: no overflow or underflow where long double is
- * double (armhf), whose range the squares of extreme double inputs leave. */
+/* y = x over its largest component (x itself where that is 0 or not finite), and that scale:
+ * norms from y neither overflow nor underflow where long double is double (armhf), whose range
+ * the squares of extreme double inputs leave, and keep their bits for subnormal x. */
+static fz_real fz_prescale(const fz_real *x, fz_real *y)
+{
+  fz_real m = fmaxl(fmaxl(fabsl(x[0]), fabsl(x[1])), fabsl(x[2]));
+  int i;
+  if (!(m > 0) || !isfinite(m)) m = 1;
+  for (i = 0; i < 3; i++) y[i] = x[i] / m;
+  return m;
+}
+/* |x| */
 static fz_real fz_norm(const fz_real *x)
 {
-  fz_real m = fmaxl(fmaxl(fabsl(x[0]), fabsl(x[1])), fabsl(x[2])), y[3];
-  int i;
-  if (!(m > 0) || !isfinite(m)) return sqrtl(fz_dot(x, x));
-  for (i = 0; i < 3; i++) y[i] = x[i] / m;
+  fz_real y[3], m = fz_prescale(x, y);
   return m * sqrtl(fz_dot(y, y));
 }
-/* x/|x| from the prescaled components: no subnormal |x| (where long double is double, a norm
- * of subnormal components keeps only the bits of its subnormal result, 2^-39 of them for an
- * axis of 2^-1036, which the unit axis would carry into every distance from it). */
+/* x/|x|, from the prescaled components: a subnormal |x| would keep only a subnormal's bits
+ * (2^-39 of them for an axis of 2^-1036), which the unit axis would carry into every distance
+ * from it. */
 static void fz_unit(const fz_real *x, fz_real *u)
 {
-  fz_real m = fmaxl(fmaxl(fabsl(x[0]), fabsl(x[1])), fabsl(x[2])), y[3], n;
+  fz_real y[3], n;
   int i;
-  for (i = 0; i < 3; i++) y[i] = m > 0 && isfinite(m) ? x[i] / m : x[i];
+  fz_prescale(x, y);
   n = sqrtl(fz_dot(y, y));
   for (i = 0; i < 3; i++) u[i] = y[i] / n;
 }
