@@ -455,8 +455,8 @@ typedef struct CYL__P(frame) {
 typedef struct CYL__P(cross) { CYL__L t, h; int part, ok, doubt; unsigned flags; } CYL__P(cross);
 
 static int CYL__P(cold)(const CYL__N(ray) *, const CYL__N(cylinder) *, unsigned, int, CYL__N(hit) *);
-static void CYL__P(refine)(const CYL__P(frame) *f, CYL__L t[2], CYL__L s[2]);
-static CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap);
+static void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l);
+static CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap, CYL__L *lo);
 
 /* ------------------------------------------------------------------ small tools */
 CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return CYL__LABS(x); }
@@ -668,8 +668,12 @@ CYL__INL void CYL__P(slab)(const CYL__P(frame) *f, CYL__L s[2])
     s[0] = CYL__P(min)(p0, p1), s[1] = CYL__P(max)(p0, p1);
 }
 
-/* The rim: is t inside the slab, ends included? */
-CYL__INL int CYL__P(in_slab)(CYL__L t, const CYL__L s[2]) { return !(t < s[0]) && !(t > s[1]); }
+/* v[i] < v[j], v = (t0, t1, s0, s1) the wall roots and slab ends; pairs v + l on the exact path (N8). */
+CYL__INL int CYL__P(before)(const CYL__P(frame) *f, const CYL__L v[4], const CYL__L l[4], int i, int j)
+{ return (CYL__SUPPORTED & CYL_PRECISE) && f->cold ? v[i] - v[j] < l[j] - l[i] : v[i] < v[j]; }
+/* The rim: is wall root k inside the slab, ends included? */
+CYL__INL int CYL__P(in_slab)(const CYL__P(frame) *f, const CYL__L v[4], const CYL__L l[4], int k)
+{ return !CYL__P(before)(f, v, l, k, 2) && !CYL__P(before)(f, v, l, 3, k); }
 
 /* N9: x and y not certainly farther apart than their bounds' sum (a NaN bound certifies none). */
 CYL__INL int CYL__P(near)(CYL__L x, CYL__L ex, CYL__L y, CYL__L ey)
@@ -677,24 +681,23 @@ CYL__INL int CYL__P(near)(CYL__L x, CYL__L ex, CYL__L y, CYL__L ey)
 /* The t range, ends included; run and load_scaled keep it within R's (a t beyond is no hit). */
 CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t) { return !(t < f->tmin) && !(t > f->tmax); }
 
-/* Crossing k (0 entry, 1 exit) of the wall roots t and the slab s (N4): the open tube keeps a
+/* Crossing k (0 entry, 1 exit) of the wall roots and the slab v (N4): the open tube keeps a
    wall crossing inside the slab; the capped solid clips the wall interval with the slab (entry
    and exit the wall or a cap; a rim point is the wall). ok: it exists, in the t range. e: the
-   certified layer's bounds on t[0], t[1], s[0], s[1] (N9); doubt: a comparison within them. */
-CYL__INL CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, int k,
-                                        const CYL__L t[2], const CYL__L s[2], const CYL__L *e,
-                                        CYL__L sq, unsigned tan)
+   certified layer's bounds on v (N9); doubt: a comparison within them. */
+CYL__INL CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, int k, const CYL__L v[4],
+                                        const CYL__L *e, const CYL__L l[4], CYL__L sq, unsigned tan)
 {
     CYL__P(cross) x;
     CYL__L ex = e ? e[k] : 0;
-    x.t = t[k], x.h = k ? sq : -sq, x.part = CYL_SIDE, x.flags = (k ? CYL_F_INSIDE : 0u) | tan;
-    x.ok = CYL__P(in_slab)(x.t, s);
-    x.doubt = e && (CYL__P(near)(t[k], ex, s[0], e[2]) || CYL__P(near)(t[k], ex, s[1], e[3]));
-    if (!x.ok && (opts & CYL_CAPS) &&
-        (k ? t[1] > s[1] && !(s[1] < t[0]) : t[0] < s[0] && !(s[0] > t[1]))) {
-        x.t = s[k], x.ok = 1, x.flags &= ~CYL_F_TANGENT;
+    x.t = v[k], x.h = k ? sq : -sq, x.part = CYL_SIDE, x.flags = (k ? CYL_F_INSIDE : 0u) | tan;
+    x.ok = CYL__P(in_slab)(f, v, l, k);
+    x.doubt = e && (CYL__P(near)(v[k], ex, v[2], e[2]) || CYL__P(near)(v[k], ex, v[3], e[3]));
+    if (!x.ok && (opts & CYL_CAPS) && (k ? CYL__P(before)(f, v, l, 3, 1) && !CYL__P(before)(f, v, l, 3, 0)
+                                         : CYL__P(before)(f, v, l, 0, 2) && !CYL__P(before)(f, v, l, 1, 2))) {
+        x.t = v[2 + k], x.ok = 1, x.flags &= ~CYL_F_TANGENT;
         x.part = CYL__CAP_PART(f, k);
-        if (e) ex = e[2 + k], x.doubt |= CYL__P(near)(s[k], ex, t[1 - k], e[1 - k]);
+        if (e) ex = e[2 + k], x.doubt |= CYL__P(near)(v[2 + k], ex, v[1 - k], e[1 - k]);
     }
     if (e && x.ok) x.doubt |= CYL__P(near)(x.t, ex, f->tmin, 0) || CYL__P(near)(x.t, ex, f->tmax, 0);
     if (f->par) { /* a parallel ray's cap crossing counts where its point is inside the disk */
@@ -756,8 +759,7 @@ CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x
 /* The unit normal (N5). The wall's outward one is y × a at the crossing, which from the roots
    is P|a|²·s ∓ √(|a|²D)·(a × s) (entry −, exit +): no cancellation for far origins. A cap's is
    ±a. The ray-facing one is the outward one turned at an exit (CYL_F_INSIDE). */
-CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts,
-                             CYL__L n[3])
+CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts, CYL__L n[3])
 {
     CYL__L as[3], len, g;
     if (x->part == CYL_SIDE) {
@@ -791,8 +793,7 @@ CYL__INL CYL__L CYL__P(axial_v)(const CYL__P(frame) *f, CYL__L t)
 
 /* The hit in the caller's units and type: t, t_err, v unscaled (exact path), t kept in range,
    t_err widened by t's rounding into R and rounded up, v within h/2 after its rounding. */
-CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts,
-                           CYL__N(hit) *hit)
+CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts, CYL__N(hit) *hit)
 {
     CYL__L n[3] = {0, 0, 0}, t = x->t, err = CYL__LINF, v;
     CYL__R tr, vr;
@@ -831,15 +832,14 @@ CYL__INL int CYL__P(band_doubt)(const CYL__P(frame) *f)
     return !(f->D - band > eD) && !(f->D + band < -eD);
 }
 
-/* Bounds e on the wall roots t and the slab ends s (N9); 1 where one is not first order. */
-CYL__INL int CYL__P(bounds)(const CYL__P(frame) *f, const CYL__L t[2], const CYL__L s[2],
-                            CYL__L sq, CYL__L e[4])
+/* Bounds e on the wall roots and the slab ends v (N9); 1 where one is not first order. */
+CYL__INL int CYL__P(bounds)(const CYL__P(frame) *f, const CYL__L v[4], CYL__L sq, CYL__L e[4])
 {
     const CYL__L u = CYL__LU, z = CYL__P(abs)(f->zeta);
     const CYL__L es = 64 * u * (CYL__LSQRT(f->aww) + f->Ha) / z, ed = 64 * u * CYL__LSQRT(f->ad) / z;
-    e[0] = CYL__P(root_bound)(f, t[0], sq), e[1] = CYL__P(root_bound)(f, t[1], sq);
-    e[2] = CYL__P(abs)(s[0]) <= CYL__LMAX ? es + CYL__P(abs)(s[0]) * (ed + 2 * u) : 0;
-    e[3] = CYL__P(abs)(s[1]) <= CYL__LMAX ? es + CYL__P(abs)(s[1]) * (ed + 2 * u) : 0;
+    e[0] = CYL__P(root_bound)(f, v[0], sq), e[1] = CYL__P(root_bound)(f, v[1], sq);
+    e[2] = CYL__P(abs)(v[2]) <= CYL__LMAX ? es + CYL__P(abs)(v[2]) * (ed + 2 * u) : 0;
+    e[3] = CYL__P(abs)(v[3]) <= CYL__LMAX ? es + CYL__P(abs)(v[3]) * (ed + 2 * u) : 0;
     return !(CYL__P(first_order)(f, CYL__P(max)(e[0], e[1]), sq) && ed <= CYL__K(0.5)); /* and ζ */
 }
 
@@ -847,32 +847,32 @@ CYL__INL int CYL__P(bounds)(const CYL__P(frame) *f, const CYL__L t[2], const CYL
    before every decision it depends on is certain (CYL_PRECISE: else CYL__DOUBT, N9). */
 CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits)
 {
-    CYL__L t[2], s[2], sq = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : 0;
+    CYL__L v[4], sq = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : 0, l[4] = {0, 0, 0, 0};
     CYL__P(cross) x, y;
     int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0, pol;
     unsigned tan = kind == 1 ? CYL_F_TANGENT : 0u;
     if (e && CYL__P(band_doubt)(f)) return CYL__DOUBT;
     if (kind == 0 || (tan && (opts & CYL_NO_TANGENT))) return 0;
-    if (!f->par) sq = CYL__P(wall_roots)(f, t);
-    else t[0] = -CYL__LINF, t[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
-    CYL__P(slab)(f, s);
-    if (f->cold && f->exact) CYL__P(refine)(f, t, s); /* the exact path's t (N8) */
+    if (!f->par) sq = CYL__P(wall_roots)(f, v);
+    else v[0] = -CYL__LINF, v[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
+    CYL__P(slab)(f, v + 2);
+    if (f->cold && f->exact) CYL__P(refine)(f, v, opts & CYL__SUPPORTED & CYL_PRECISE ? l : 0); /* N8 */
     pol = e && sizeof(CYL__L) == sizeof(CYL__R) && want; /* the double API's t to an ulp */
-    if (e && CYL__P(bounds)(f, t, s, sq, e)) return CYL__DOUBT;
-    x = CYL__P(crossing)(f, opts, 0, t, s, e, sq, tan); /* entry, then exit: no loop, so */
+    if (e && CYL__P(bounds)(f, v, sq, e)) return CYL__DOUBT;
+    x = CYL__P(crossing)(f, opts, 0, v, e, l, sq, tan); /* entry, then exit: no loop, so */
     if (e) { /* both certain, whatever the entry point: */ /* that k and the arrays fold away */
-        y = CYL__P(crossing)(f, opts, 1, t, s, e, sq, tan); /* each answers on one path */
+        y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan); /* each answers on one path */
         if (x.doubt || y.doubt) return CYL__DOUBT;
         if (pol) { /* each crossing emitted moved onto its residual's root */
-            if (x.ok) x.t = CYL__P(polish)(f, x.t, x.part, sq / f->A);
-            if (y.ok && !(x.ok && want < 2)) y.t = CYL__P(polish)(f, y.t, y.part, sq / f->A);
+            if (x.ok) x.t = CYL__P(polish)(f, x.t, x.part, sq / f->A, 0);
+            if (y.ok && !(x.ok && want < 2)) y.t = CYL__P(polish)(f, y.t, y.part, sq / f->A, 0);
         }
     }
     if (x.ok && want < 2) {
         if (want) CYL__P(emit)(f, &x, opts, hits);
         return 1;
     }
-    if (!e) y = CYL__P(crossing)(f, opts, 1, t, s, e, sq, tan);
+    if (!e) y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan);
     if (x.ok) CYL__P(emit)(f, &x, opts, &hits[n++]);
     if (y.ok && want) CYL__P(emit)(f, &y, opts, &hits[n]);
     return n + y.ok;
@@ -978,8 +978,9 @@ CYL__COLD void CYL__P(exact_frame)(CYL__P(frame) *f)
 
 /* t onto its residual's root by Newton's method on compensated sums (N8): a cap plane's a·x ±
    H|a| (part LOW or HIGH; one step), the wall's |a × x|² − r²|a|² (up to three, each leaving
-   about dt²/(2·gap); kept if it moved less than gap, half the roots' distance). */
-CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap)
+   about dt²/(2·gap); kept if it moved less than gap, half the roots' distance); *lo (if lo):
+   the root's low part, the step's rounding or the wall's next step. */
+CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap, CYL__L *lo)
 {
     CYL__L v = t, dt, g, sa[2], ra[3], H, Hh, zh, zl;
     CYL__P(acc) F, Z;
@@ -991,28 +992,34 @@ CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__
         zh = CYL__P(acc_pair)(&Z, &zl);
         CYL__P(acc_add)(&F, Hh), F.c += CYL__P(prod_err)(H, sa[0], Hh) + H * sa[1];
         CYL__P(acc_mul)(&F, t, zh), F.c += t * zl;
-        v = t - (F.s + F.c) / (zh + zl);
+        v = t + (dt = -(F.s + F.c) / (zh + zl));
+        if (lo && CYL__P(abs)(v) <= CYL__LMAX) *lo = CYL__P(sum_err)(t, dt, v);
         return CYL__P(abs)(v) <= CYL__LMAX ? v : t; /* ζ = 0 (no ends): t stays */
     }
     for (it = 0; it < 3; it++) {
         v -= dt = CYL__P(resid)(f, ra, v, &g) / (2 * g);
         if (!(dt * dt > gap * CYL__LU * CYL__P(abs)(v))) break;
     }
-    return CYL__P(abs)(v - t) < gap ? v : t;
+    if (!(CYL__P(abs)(v - t) < gap)) return t;
+    if (lo && (dt = -CYL__P(resid)(f, ra, v, &g) / (2 * g), CYL__P(abs)(dt) < gap)) *lo = dt;
+    return v;
 }
 
-/* The exact path's slab ends and wall roots on their residuals' roots, the roots from its t_c
-   and D (N8); a contact without roots is at the closest approach. */
-CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, CYL__L t[2], CYL__L s[2])
+/* The exact path's slab ends and wall roots v on their residuals' roots, the roots from its
+   t_c and D (N8); a contact without roots is at the closest approach. l (CYL_PRECISE): their
+   low parts, for the rim to compare the pairs. */
+CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l)
 {
-    CYL__L lo = CYL__P(polish)(f, s[0], CYL__CAP_PART(f, 0), 0);
-    CYL__L hi = CYL__P(polish)(f, s[1], CYL__CAP_PART(f, 1), 0);
+    CYL__L *q = CYL__SUPPORTED & CYL_PRECISE ? l : 0; /* folds under CYL_NO_PRECISE */
+    CYL__L lo = CYL__P(polish)(f, v[2], CYL__CAP_PART(f, 0), 0, q ? &q[2] : 0);
+    CYL__L hi = CYL__P(polish)(f, v[3], CYL__CAP_PART(f, 1), 0, q ? &q[3] : 0);
     CYL__L gap = f->D > 0 ? CYL__LSQRT(f->aa * f->D) / f->A : 0; /* half the roots' distance */
-    if (lo <= hi) s[0] = lo, s[1] = hi;
+    if (lo <= hi) v[2] = lo, v[3] = hi;
+    else if (q) q[2] = q[3] = 0;
     if (f->par) return;
-    t[0] = t[1] = f->tc; /* a contact without roots stays there */
-    if (gap > 0) t[0] = CYL__P(polish)(f, t[0] - gap, CYL_SIDE, gap),
-                 t[1] = CYL__P(polish)(f, t[1] + gap, CYL_SIDE, gap);
+    v[0] = v[1] = f->tc; /* a contact without roots stays there */
+    if (gap > 0) v[0] = CYL__P(polish)(f, v[0] - gap, CYL_SIDE, gap, q),
+                 v[1] = CYL__P(polish)(f, v[1] + gap, CYL_SIDE, gap, q ? &q[1] : 0);
 }
 
 /* Validation in the documented order (the hot path sent what its range test refused). */
@@ -1035,8 +1042,7 @@ static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder
 
 /* The frame of valid input scaled into the range (N2): lengths by 2^-kl, d by 2^-kd, a by
    2^-ka (exact); o − c exactly as a pair, from halved o and c where it would overflow. */
-static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
-                                       const CYL__N(cylinder) *cyl)
+static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl)
 {
     CYL__L wr[3], m;
     int j = 0, kl, kd, ka, i;
@@ -1077,8 +1083,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     CYL__P(load_scaled)(&f, ray, cyl);
     while (!CYL__P(derive)(&f)) { /* one call: it is inlined once */
         if (!f.exact) return CYL_MISS;
-        f.r = CYL__P(max)(f.r, CYL__LSQRT(f.lo) * 2);
-        f.H = CYL__P(max)(f.H, f.lo * 2);
+        f.r = CYL__P(max)(f.r, CYL__LSQRT(f.lo) * 2), f.H = CYL__P(max)(f.H, f.lo * 2);
         f.exact = 0;
     }
     f.par = CYL__P(parallel)(&f) <= 0;
@@ -1127,12 +1132,11 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 
 /* NOTES (cited from the code as N1 .. N9); u is the working type's unit roundoff
    N1. One formulation (DESIGN.md of the project): w = o − c, s = a × d, m = a × w (cross
-       products, never projections: no cancellation for rays near the axis direction or
-       origins far along it), A = s·s, B = m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d,
-       Ha = (h/2)|a|, formed in pairs (s, m), (ζ, z0), (A, B), (P, |m|²): vectors where the
-       compiler has them, one instruction for two (same roundings, same order, same bits). The
-       exact path forms s and m with Kahan's FMA difference of products (Jeannerod, Louvet,
-       Muller, Math. Comp. 82, 2013), each component within 2u of itself.
+       products, never projections: no cancellation for rays near the axis direction or origins
+       far along it), A = s·s, B = m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d, Ha = (h/2)|a|,
+       formed in pairs (s, m), (ζ, z0), (A, B), (P, |m|²): vectors where the compiler has them,
+       one instruction for two, the same bits. The exact path forms s and m with Kahan's FMA
+       difference of products (Jeannerod, Louvet, Muller, Math. Comp. 82, 2013), within 2u each.
    N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², r²A (else D
        can be subnormal), Ha and |a|⁴|d|²(|w|² + r²) against one range; every NaN, infinity, zero
        or out-of-range input fails it and goes to the exact path, which validates in the
@@ -1152,7 +1156,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F| + EF)/(|G| −
        EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap: the plane's
        residual over |ζ| less its bound. The float API computed in double adds t's rounding; its
-       wall root's bound is N9's where first order and below 2^-7 of float's ulp of t (cheaper).
+       wall root's bound is N9's where first order and below 2^-7 of float's ulp of t.
    N6. The plain tier's limits, from rounding what each decision compares: e = D/(r²A) carries
        a few u·(1 + |o − c|/r)(1 + 2ρ/r) (ρ: the line's distance from the axis): the tangent
        band's edges blur by that for far origins; a rim, u·(|o − c| + |t d| + h)/h of the half
@@ -1162,39 +1166,35 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        double API sends those to the exact path, whose s and m are accurate.
    N7. Parallel: A <= τ²|a|²|d|² (sin <= τ = CYL_PARALLEL_TOL). Below sin = u a half-ulp change
        of one component of d makes the ray exactly parallel; yet a ray from the wall can cross
-       it again a few dozen radii along, a crossing its inputs determine (a × d is exact for
-       an axis-aligned a), which the rule drops: pinned by
-       test_parallel_rule_drops_secondary_ray_from_wall in tests/contract/tangent.c.
+       it again a few dozen radii along, a crossing its inputs determine (a × d is exact for an
+       axis-aligned a), which the rule drops (test_parallel_rule_drops_secondary_ray_from_wall).
    N8. The exact path's t: before any decision, each slab end takes one Newton step t − F/F'
-       on its cap plane's residual F = a·x ± H|a| (F' = ζ), each wall root up to three on
-       F = |a × x|² − r²|a|² (F' = 2(a × x)·s; a step leaves about dt²/(2·gap)), x = w + t·d,
-       with w exact as a pair and each product's error kept exactly (FMA, or Dekker's split)
-       in a compensated sum (Ogita, Rump, Oishi, "Accurate sum and dot product", SIAM J. Sci.
-       Comput. 26, 2005): F's error is about u|F| + u²(r²|a|² + |a|²|x|²), so t lands within
-       about an ulp of the root, and the rim and t range decide on it; z0 and ζ are such sums
-       too (a cap step divides by ζ: a plain one would leave u|a||d|/|ζ| of the step). The
-       tangent band decides on D from the same residual near the closest approach t_c = −B/A:
-       F(t) = g²/A − |a|²D/A for the quadratic, g = (a × x)·s = F'/2, so D = (g² − AF)/|a|²
-       whatever t's rounding (taking F alone left far origins' D to u²|a|²|w|²), where the
-       plain D errs by u·r²A·|w|/r and more. t_c takes one step on g (linear, g' = A); the
-       roots start at t_c ± √(|a|²D)/A (the plain C cancels for an origin on the wall), each
-       refined while its steps stay within that half gap; without roots, a contact is at t_c.
-   N9. The certified layer (CYL_PRECISE on the hot path): each comparison an answer depends on
-       (tangent band, rims, t range, entry and exit, for both crossings whatever the entry point) is
-       taken only where its operands lie farther apart than their bounds' sum; else the exact path
+       on its cap plane's residual F = a·x ± H|a| (F' = ζ), each wall root up to three on F =
+       |a × x|² − r²|a|² (F' = 2(a × x)·s; a step leaves about dt²/(2·gap)), x = w + t·d, w
+       exact as a pair, each product's error kept exactly (FMA, or Dekker's split) in a
+       compensated sum (Ogita, Rump, Oishi, SIAM J. Sci. Comput. 26, 2005): F errs by about
+       u|F| + u²(r²|a|² + |a|²|x|²); z0 and ζ are such sums too. With CYL_PRECISE the next step
+       is kept as each t's low part and the rim compares the pairs: a steep ray moves |ζ|/|a|
+       along the axis per unit of t, so an ulp of t can exceed a flat disk's rim margin. The
+       tangent band decides on D from the residual near the closest approach t_c = −B/A: F(t) =
+       g²/A − |a|²D/A for the quadratic, g = (a × x)·s = F'/2, so D = (g² − AF)/|a|² whatever
+       t's rounding (the plain D errs by u·r²A·|w|/r and more). t_c takes one step on g (g' =
+       A); the roots start at t_c ± √(|a|²D)/A (the plain C cancels for an origin on the wall),
+       each refined while its steps stay within that half gap; without roots, a contact is at t_c.
+   N9. The certified layer (CYL_PRECISE on the hot path) takes each comparison an answer depends
+       on (tangent band, rims, t range, entry and exit, both crossings whatever the entry point)
+       only where its operands lie farther apart than their bounds' sum; else the exact path
        answers. The bounds are a priori, from magnitudes the hot path has: s and m carry about
-       u|a||d| and u|a||w| (w's own rounding included), so A, B, C, D, and the quadratic each root
-       solves (the root pair uses √(|a|²D), not B² − AC), err at t by at most k(S + t²|a|²|d|²), S =
-       |a|²(|w|² + r²), k = 128u(1 + |a||d|/|s|) (the last term: P's and that identity's error
-       through s). A root moves by that over √(|a|²D) (|f'|/2), plus 4u|t| for the formula, while
-       this is below √(|a|²D)/A (first order; else the exact path); D by k·S·A/|a|²; a slab end by
-       64u(|a||w| + Ha + |t||a||d|)/|ζ| + 2u|t|, while |ζ| > 128u|a||d| (the plain ζ may be all
-       rounding below that). A NaN or infinite bound certifies nothing. A contact inside the band
-       goes there too: its roots move by u/√e. Each crossing the double API then emits takes N8's
-       step (polish): its t errs by up to 36 ulps on the hot path, the tier promises 2; the float
-       API's, computed in double, is within 2^-29 of the root already. A helper body takes an API's
-       CYL_PRECISE calls out of line: the float API's in double where it computes in float (none
-       without double); on x86-64 built without the FMA, both APIs' built with it where the CPU has
-       it (CYL_FMA_DISPATCH; not the double API's occluded): polish's exact products one instruction
-       each, nothing contracted or vectorized: the same bits.
+       u|a||d| and u|a||w|, so A, B, C, D and the quadratic each root solves (from √(|a|²D), not
+       B² − AC) err at t by at most k(S + t²|a|²|d|²), S = |a|²(|w|² + r²), k = 128u(1 + |a||d|/|s|)
+       (the last term: P's error through s). A root moves by that over √(|a|²D), plus 4u|t|,
+       while this is below √(|a|²D)/A (first order); D by k·S·A/|a|²; a slab end by 64u(|a||w| +
+       Ha + |t||a||d|)/|ζ| + 2u|t|, while |ζ| > 128u|a||d|. A NaN or infinite bound, or a contact
+       inside the band (its roots move by u/√e), certifies nothing. Each crossing the double API
+       emits then takes N8's step (polish): 36 ulps on the hot path, the tier promises 2; the
+       float API's, computed in double, is within 2^-29 already. Helper bodies take CYL_PRECISE
+       calls out of line: the float API's in double where it computes in float; on x86-64 built
+       without the FMA, both APIs' built with it where the CPU has it (CYL_FMA_DISPATCH; not the
+       double API's occluded): one instruction per exact product, nothing contracted or
+       vectorized, the same bits.
 */
