@@ -976,10 +976,9 @@ CYL__COLD void CYL__P(exact_frame)(CYL__P(frame) *f)
     f->D = (g * g - F * f->A) / f->aa, f->tc -= g / f->A;
 }
 
-/* t onto its residual's root by Newton's method on compensated sums (N8): a cap plane's a·x ±
-   H|a| (part LOW or HIGH; one step), the wall's |a × x|² − r²|a|² (up to three, each leaving
-   about dt²/(2·gap); kept if it moved less than gap, half the roots' distance); *lo (if lo):
-   the root's low part, the step's rounding or the wall's next step. */
+/* t onto its residual's root by Newton steps on compensated sums (N8): a cap plane's a·x ± H|a|
+   (one), the wall's |a × x|² − r²|a|² (up to three, each leaving dt²/(2·gap); kept if it moved
+   less than gap, half the roots' distance). *lo (if lo): the low part (the wall: one more step). */
 CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap, CYL__L *lo)
 {
     CYL__L v = t, dt, g, sa[2], ra[3], H, Hh, zh, zl;
@@ -1001,7 +1000,8 @@ CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__
         if (!(dt * dt > gap * CYL__LU * CYL__P(abs)(v))) break;
     }
     if (!(CYL__P(abs)(v - t) < gap)) return t;
-    if (lo && (dt = -CYL__P(resid)(f, ra, v, &g) / (2 * g), CYL__P(abs)(dt) < gap)) *lo = dt;
+    if (lo && (dt = -CYL__P(resid)(f, ra, v, &g) / (2 * g), CYL__P(abs)(dt) < gap))
+        t = v + dt, *lo = CYL__P(sum_err)(v, dt, t), v = t; /* v: the pair rounded, as decided */
     return v;
 }
 
