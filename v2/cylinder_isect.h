@@ -757,31 +757,21 @@ CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x
 }
 
 /* The unit normal (N5). The wall's outward one is y × a at the crossing, which from the roots
-   is P|a|²·s ∓ √(|a|²D)·(a × s) (entry −, exit +): no cancellation for far origins. A cap's is
-   ±a. The ray-facing one is the outward one turned at an exit (CYL_F_INSIDE). */
+   is P|a|²·s ∓ √(|a|²D)·(a × s) (entry −, exit +): no cancellation for far origins; its length
+   follows from P and h alone. A cap's is ±a. The ray-facing one turns at an exit (CYL_F_INSIDE). */
 CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts, CYL__L n[3])
 {
-    CYL__L as[3], len, g;
-    if (x->part == CYL_SIDE) {
-        g = 1 / (f->sqaa * f->A); /* over |a||s|²: |n| = r|a|, not r|a|²|s|² (N5) */
-        CYL__P(cross3)(f->a, f->s, as);
-        CYL__P(lin)(f->P * g * f->aa, f->s, -x->h * g, as, n);
-        len = CYL__P(dot)(n, n);
-        if (!(len >= CYL__LTINY * CYL__K(4503599627370496.0) && len <= CYL__LMAX * CYL__LU)) {
-            int e; /* |n|² out of the range; zero where a contact's D and P vanished (N6) */
-            if (!(CYL__P(amax)(n) > 0)) CYL__P(mul3)(x->flags & CYL_F_INSIDE ? -1 : 1, as, n);
-            e = CYL__LT(expo)(CYL__P(amax)(n));
-            n[0] = CYL__LT(scale)(n[0], -e), n[1] = CYL__LT(scale)(n[1], -e);
-            n[2] = CYL__LT(scale)(n[2], -e), len = CYL__P(dot)(n, n);
-        }
-        len = CYL__LSQRT(len);
-    } else {
-        g = x->part == CYL_CAP_HIGH ? 1 : -1;
-        CYL__P(mul3)(g, f->a, n);
-        len = f->sqaa;
+    CYL__L as[3], g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 : 1, h = x->h, q;
+    if (x->part != CYL_SIDE) {
+        CYL__P(mul3)(x->part == CYL_CAP_HIGH ? g / f->sqaa : -g / f->sqaa, f->a, n);
+        return;
     }
-    g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 / len : 1 / len;
-    CYL__P(mul3)(g, n, n);
+    q = f->P * f->P + h * h / f->aa; /* |P|a|²s ∓ h(a × s)| = |a|²|s|√q (N5) */
+    if (!(q > 0)) h = x->flags & CYL_F_INSIDE ? f->aa : -f->aa, q = f->aa; /* P = D = 0 (N6) */
+    CYL__P(cross3)(f->a, f->s, as);
+    q = 1 / (CYL__LSQRT(f->A) * CYL__LSQRT(q));
+    CYL__P(lin)(f->P * q, f->s, -h / f->aa * q, as, n);
+    CYL__P(mul3)(g, n, n); /* turned last: the two normals negate bit for bit */
 }
 
 /* v of a wall point (N5), kept within the tube's half height. */
@@ -1149,14 +1139,15 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        caps by clipping the wall interval with the slab |z0 + tζ| <= Ha (Cychosz and
        Waggenspack, Graphics Gems IV): watertight at the rim, no separate disk test.
    N5. Output: v = (z0 + tζ)/|a|; the wall normal y × a (= |a|²x⊥, y = m + t·s = a × x)
-       written from the roots as P|a|²s ∓ √(|a|²D)(a × s). t_err: F = |y|² − r²|a|² and
-       G = y·s at t, with bounds EF, EG on their rounding (standard model, Higham, "Accuracy
-       and Stability of Numerical Algorithms", ch. 3; componentwise sums bounded by 2-norms,
-       e.g. |δ(a × w)|₁ <= 3u·√6|a||w|). f(t + δ) = f + 2gδ + Aδ² exactly: where g has the
-       crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F| + EF)/(|G| −
-       EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap: the plane's
-       residual over |ζ| less its bound. The float API computed in double adds t's rounding; its
-       wall root's bound is N9's where first order and below 2^-7 of float's ulp of t.
+       written from the roots as P|a|²s − h(a × s), h = ∓√(|a|²D), of length |a|²|s|√(P² +
+       h²/|a|²) (s ⊥ a × s): made unit by its two scalars, none of its terms can overflow.
+       t_err: F = |y|² − r²|a|² and G = y·s at t, with bounds EF, EG on their rounding (standard
+       model, Higham, "Accuracy and Stability of Numerical Algorithms", ch. 3; componentwise sums
+       bounded by 2-norms, e.g. |δ(a × w)|₁ <= 3u·√6|a||w|). f(t + δ) = f + 2gδ + Aδ² exactly:
+       where g has the crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F|
+       + EF)/(|G| − EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap:
+       the plane's residual over |ζ| less its bound. The float API computed in double adds t's
+       rounding; its wall root's bound is N9's where first order and below 2^-7 of float's ulp.
    N6. The plain tier's limits, from rounding what each decision compares: e = D/(r²A) carries
        a few u·(1 + |o − c|/r)(1 + 2ρ/r) (ρ: the line's distance from the axis): the tangent
        band's edges blur by that for far origins; a rim, u·(|o − c| + |t d| + h)/h of the half
