@@ -761,16 +761,18 @@ CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x
    follows from P and h alone. A cap's is ±a. The ray-facing one turns at an exit (CYL_F_INSIDE). */
 CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts, CYL__L n[3])
 {
-    CYL__L as[3], g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 : 1, h = x->h, q;
+    CYL__L as[3], g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 : 1, h = x->h, P = f->P, q;
     if (x->part != CYL_SIDE) {
         CYL__P(mul3)(x->part == CYL_CAP_HIGH ? g / f->sqaa : -g / f->sqaa, f->a, n);
         return;
     }
-    q = f->P * f->P + h * h / f->aa; /* |P|a|²s ∓ h(a × s)| = |a|²|s|√q (N5) */
+    if (f->cold && (q = CYL__P(max)(CYL__P(abs)(P), CYL__P(abs)(h) / f->sqaa)) > 0)
+        P /= q, h /= q; /* the exact path's P² can leave the range (the hot path's cannot, N2) */
+    q = P * P + h * h / f->aa; /* |P|a|²s ∓ h(a × s)| = |a|²|s|√q (N5) */
     if (!(q > 0)) h = x->flags & CYL_F_INSIDE ? f->aa : -f->aa, q = f->aa; /* P = D = 0 (N6) */
     CYL__P(cross3)(f->a, f->s, as);
     q = 1 / (CYL__LSQRT(f->A) * CYL__LSQRT(q));
-    CYL__P(lin)(f->P * q, f->s, -h / f->aa * q, as, n);
+    CYL__P(lin)(P * q, f->s, -h / f->aa * q, as, n);
     CYL__P(mul3)(g, n, n); /* turned last: the two normals negate bit for bit */
 }
 
