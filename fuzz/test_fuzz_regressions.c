@@ -836,13 +836,14 @@ static void test_double_surface_origin_near_tangent_rim(void)
   }
 }
 
-/* Finding 55 (fixed: the exact path's rim compares its t and slab ends as pairs, N8; v2 only, v1
- * passes; fuzz_grid, `make fuzz V=2` on d0266d1, within 7 min; 5f76c34 has it too). Double, CYL_PRECISE, occluded, open tube: a disk of r = 2^27·1.9 and h = 2^-16·1.9
- * (h/r = 1.1e-13) with an axis of |a| = 2^42·1.95, a ray of |d| = 2^48 within 1.8e-12 of its axis
- * from an origin 82 outside its wall. The wall crossing and the slab, 1e-19 wide in t, both lie at
- * t = 1 + 8.9e-10, within an ulp of each other: the exact path refines both t to an ulp and
- * compares them, which cannot resolve an axial distance of 0.027 h/2 moved by 2^48 per unit of t.
- * It reports a wall hit; the exact answer is a miss. */
+/* Finding 55 (fixed: the exact path's rim compares its t and slab ends as pairs, N8; v2 only,
+ * v1 passes; fuzz_grid, `make fuzz V=2` on d0266d1, within 7 min; 5f76c34 has it too). Double,
+ * CYL_PRECISE, occluded, open tube: a disk of r = 2^27·1.9 and h = 2^-16·1.9 (h/r = 1.1e-13)
+ * with an axis of |a| = 2^42·1.95, a ray of |d| = 2^48 within 1.8e-12 of its axis from an origin
+ * 82 outside its wall. The wall crossing and the slab, 1e-19 wide in t, both lie at t = 1 +
+ * 8.9e-10, within an ulp of each other: the exact path refined both t to an ulp and compared
+ * them, which cannot resolve an axial distance of 0.027 h/2 moved by 2^48 per unit of t. It
+ * reported a wall hit; the exact answer is a miss. */
 static void test_double_precise_flat_disk_rim_below_t_ulp(void)
 {
 #ifndef FUZZ_HAVE_REF

@@ -848,7 +848,7 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
     if (!f->par) sq = CYL__P(wall_roots)(f, v);
     else v[0] = -CYL__LINF, v[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
     CYL__P(slab)(f, v + 2);
-    if (f->cold && f->exact) CYL__P(refine)(f, v, opts & CYL__SUPPORTED & CYL_PRECISE ? l : 0); /* N8 */
+    if (f->cold && f->exact) CYL__P(refine)(f, v, opts & CYL_PRECISE ? l : 0); /* N8 */
     pol = e && sizeof(CYL__L) == sizeof(CYL__R) && want; /* the double API's t to an ulp */
     if (e && CYL__P(bounds)(f, v, sq, e)) return CYL__DOUBT;
     x = CYL__P(crossing)(f, opts, 0, v, e, l, sq, tan); /* entry, then exit: no loop, so */
@@ -1010,7 +1010,7 @@ CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l)
     else if (q) q[2] = q[3] = 0;
     if (f->par) return;
     v[0] = v[1] = f->tc; /* a contact without roots stays there */
-    if (gap > 0) v[0] = CYL__P(polish)(f, v[0] - gap, CYL_SIDE, gap, q),
+    if (gap > 0) v[0] = CYL__P(polish)(f, v[0] - gap, CYL_SIDE, gap, q ? &q[0] : 0),
                  v[1] = CYL__P(polish)(f, v[1] + gap, CYL_SIDE, gap, q ? &q[1] : 0);
 }
 
