@@ -852,6 +852,19 @@ static void test_double_precise_flat_disk_rim_below_t_ulp(void)
   replay_finding("double-v2-precise-flat-disk-rim-below-t-ulp", FIXED);
 }
 
+/* Finding 58 (open for v1, which stays untouched until v2 replaces it; v2 passes: its plain rim
+ * decides this scene right). `make check`'s fuzz-short on v1, seeded with finding 55's input,
+ * found within 35 s: double, default tier, NO_TANGENT, occluded. The same flat disk (r =
+ * 2^27·1.9, h = 2^-16·1.9) and a ray of |d| = 2^48 nearly along its axis from an origin far
+ * along it; v1 reports a hit where the exact answer is a miss, rim margin 0.027. */
+static void test_double_flat_disk_steep_ray_default_rim(void)
+{
+#ifndef FUZZ_HAVE_REF
+  TEST_IGNORE_MESSAGE("the exact answer needs the MPFR reference (not in cross builds)");
+#endif
+  replay_finding("double-flat-disk-steep-ray-default-rim", CYL_VERSION_MAJOR >= 2 ? FIXED : OPEN);
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -902,5 +915,6 @@ int main(void)
   RUN_TEST(test_precise_axial_speed_rounded_to_zero);
   RUN_TEST(test_double_precise_cap_step_plain_axial_speed);
   RUN_TEST(test_double_precise_flat_disk_rim_below_t_ulp);
+  RUN_TEST(test_double_flat_disk_steep_ray_default_rim);
   return UNITY_END();
 }
