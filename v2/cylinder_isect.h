@@ -357,7 +357,8 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LINF (CYL__LMAX * 2)
 
 /* One body per API, parameters (#undef'd by it): CYL__P its private names, CYL__RD 1 if its type
-   R is double, CYL__LD 1 if its working type L is. A helper body (CYL__HELPER, N9): an API's in
+   R is double, CYL__LD 1 if its working type L is, CYL__X the names of an earlier body of the
+   same L whose frame type and exact path it shares (N8). A helper body (CYL__HELPER, N9): an API's in
    another type or instruction set, taking CYL_PRECISE calls as CYL__HANDOFF_IF. */
 #ifndef CYL_NO_DOUBLE
 #define CYL__RD 1
@@ -374,6 +375,9 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__RD 0
 #define CYL__P(x) cyl__f_##x
 #define CYL__LD CYL_FLOAT_WIDE
+#if CYL_FLOAT_WIDE
+#define CYL__X(x) cyl__d_##x
+#endif
 #if !CYL_FLOAT_WIDE && !defined(CYL_NO_PRECISE)
 #define CYL__HANDOFF(x) cyl__fw_##x
 #define CYL__HANDOFF_IF(want) 1
@@ -386,6 +390,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__HELPER 1 /* the float API's body in double, private: its CYL_PRECISE calls */
 #define CYL__RD 0
 #define CYL__P(x) cyl__fw_##x
+#define CYL__X(x) cyl__d_##x
 #define CYL__LD 1
 #include CYL_HEADER_FILENAME
 #endif
@@ -412,6 +417,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__RD 0
 #define CYL__LD 1
 #define CYL__P(x) cyl__fx_##x
+#define CYL__X(x) cyl__dx_##x
 #define CYL__LFASTFMA 1
 #include CYL_HEADER_FILENAME
 #endif
@@ -426,6 +432,11 @@ CYL_DEF const char *cyl_strerror(int code)
 #endif /* CYLINDER_ISECT_H */
 
 #else /* CYL__P: one precision's body, written once */
+
+#ifndef CYL__X /* the first body of its working type: it defines the exact path (N8) */
+#define CYL__X(x) CYL__P(x)
+#define CYL__XOWN
+#endif
 
 /* The certified layer runs (N9): CYL_PRECISE asked for and compiled in (it folds away
    without, opts constant or not); what answer returns when it is not sure. */
@@ -445,18 +456,22 @@ static int CYL__HANDOFF(out)(const CYL__N(ray) *, const CYL__N(cylinder) *, unsi
 
 /* The frame (N1): the inputs in L, scaled on the exact path (t, v there 2^et, 2^ev times the
    frame's), and everything derived from them once; tc: the exact path's closest approach. */
+#ifndef CYL__XOWN
+typedef CYL__X(frame) CYL__P(frame);
+#else
 typedef struct CYL__P(frame) {
     CYL__L w[3], wl[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, vlim, lo;
     CYL__L s[3], m[3], aa, ad, mm, aww, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha, tc;
     int et, ev, exact, cold, par; /* cold: the exact path's (FMA products, unscaled output) */
 } CYL__P(frame);
+static void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l);
+static CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap, CYL__L *lo);
+#endif
 
 /* One crossing of the ray with the surface; h: ∓√(|a|²D) at a wall (entry −, exit +). */
 typedef struct CYL__P(cross) { CYL__L t, h; int part, ok, doubt; unsigned flags; } CYL__P(cross);
 
 static int CYL__P(cold)(const CYL__N(ray) *, const CYL__N(cylinder) *, unsigned, int, CYL__N(hit) *);
-static void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l);
-static CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap, CYL__L *lo);
 
 /* ------------------------------------------------------------------ small tools */
 CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return CYL__LABS(x); }
@@ -848,7 +863,7 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
     if (!f->par) sq = CYL__P(wall_roots)(f, v);
     else v[0] = -CYL__LINF, v[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
     CYL__P(slab)(f, v + 2);
-    if (f->cold && f->exact) CYL__P(refine)(f, v, opts & CYL_PRECISE ? l : 0); /* N8 */
+    if (f->cold && f->exact) CYL__X(refine)(f, v, opts & CYL_PRECISE ? l : 0); /* N8 */
     pol = e && sizeof(CYL__L) == sizeof(CYL__R) && want; /* the double API's t to an ulp */
     if (e && CYL__P(bounds)(f, v, sq, e)) return CYL__DOUBT;
     x = CYL__P(crossing)(f, opts, 0, v, e, l, sq, tan); /* entry, then exit: no loop, so */
@@ -856,8 +871,8 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
         y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan); /* each answers on one path */
         if (x.doubt || y.doubt) return CYL__DOUBT;
         if (pol) { /* each crossing emitted moved onto its residual's root */
-            if (x.ok) x.t = CYL__P(polish)(f, x.t, x.part, sq / f->A, 0);
-            if (y.ok && !(x.ok && want < 2)) y.t = CYL__P(polish)(f, y.t, y.part, sq / f->A, 0);
+            if (x.ok) x.t = CYL__X(polish)(f, x.t, x.part, sq / f->A, 0);
+            if (y.ok && !(x.ok && want < 2)) y.t = CYL__X(polish)(f, y.t, y.part, sq / f->A, 0);
         }
     }
     if (x.ok && want < 2) {
@@ -871,6 +886,7 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
 }
 
 /* ------------------------------------------------------------------ the exact path */
+#ifdef CYL__XOWN
 /* x·y − p for p = x·y rounded, exactly: by FMA where it is one instruction, else by Dekker's
    split (a call to fma() would spill every register around it). */
 CYL__INL CYL__L CYL__P(prod_err)(CYL__L x, CYL__L y, CYL__L p)
@@ -1013,6 +1029,7 @@ CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l)
     if (gap > 0) v[0] = CYL__P(polish)(f, v[0] - gap, CYL_SIDE, gap, q ? &q[0] : 0),
                  v[1] = CYL__P(polish)(f, v[1] + gap, CYL_SIDE, gap, q ? &q[1] : 0);
 }
+#endif /* CYL__XOWN */
 
 /* Validation in the documented order (the hot path sent what its range test refused). */
 static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
@@ -1079,7 +1096,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         f.exact = 0;
     }
     f.par = CYL__P(parallel)(&f) <= 0;
-    if (f.exact) CYL__P(exact_frame)(&f);
+    if (f.exact) CYL__X(exact_frame)(&f);
     return CYL__P(answer)(&f, opts, want, hits);
 }
 
@@ -1111,6 +1128,8 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #endif
 
 #undef CYL__HELPER
+#undef CYL__X
+#undef CYL__XOWN
 #undef CYL__HANDOFF
 #undef CYL__HANDOFF_IF
 #undef CYL__LD
