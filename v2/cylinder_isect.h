@@ -937,8 +937,8 @@ CYL__INL void CYL__P(norm_a)(const CYL__P(frame) *f, CYL__L sa[2], CYL__L ra[3])
 }
 
 /* The wall's residual F = |a × x|² − r²|a|² at t as its compensated sum (N8), and g = (a × x)·s
-   (F' = 2g). */
-CYL__INL CYL__L CYL__P(resid)(const CYL__P(frame) *f, const CYL__L ra[3], CYL__L t, CYL__L *gp)
+   (F' = 2g). Out of line: exact_frame and polish's steps share one copy. */
+CYL__OUT CYL__L CYL__P(resid)(const CYL__P(frame) *f, const CYL__L ra[3], CYL__L t, CYL__L *gp)
 {
     CYL__L xh[3], xl[3], yh, yl, g = 0;
     CYL__P(acc) q, F;
