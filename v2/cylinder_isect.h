@@ -357,8 +357,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LINF (CYL__LMAX * 2)
 
 /* One body per API, parameters (#undef'd by it): CYL__P its private names, CYL__RD 1 if its type
-   R is double, CYL__LD 1 if its working type L is, CYL__X the names of an earlier body of the
-   same L whose frame type and exact path it shares (N8). A helper body (CYL__HELPER, N9): an API's in
+   R is double, CYL__LD 1 if its working type L is. A helper body (CYL__HELPER, N9): an API's in
    another type or instruction set, taking CYL_PRECISE calls as CYL__HANDOFF_IF. */
 #ifndef CYL_NO_DOUBLE
 #define CYL__RD 1
@@ -375,9 +374,6 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__RD 0
 #define CYL__P(x) cyl__f_##x
 #define CYL__LD CYL_FLOAT_WIDE
-#if CYL_FLOAT_WIDE
-#define CYL__X(x) cyl__d_##x
-#endif
 #if !CYL_FLOAT_WIDE && !defined(CYL_NO_PRECISE)
 #define CYL__HANDOFF(x) cyl__fw_##x
 #define CYL__HANDOFF_IF(want) 1
@@ -390,7 +386,6 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__HELPER 1 /* the float API's body in double, private: its CYL_PRECISE calls */
 #define CYL__RD 0
 #define CYL__P(x) cyl__fw_##x
-#define CYL__X(x) cyl__d_##x
 #define CYL__LD 1
 #include CYL_HEADER_FILENAME
 #endif
@@ -417,7 +412,6 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__RD 0
 #define CYL__LD 1
 #define CYL__P(x) cyl__fx_##x
-#define CYL__X(x) cyl__dx_##x
 #define CYL__LFASTFMA 1
 #include CYL_HEADER_FILENAME
 #endif
@@ -433,7 +427,13 @@ CYL_DEF const char *cyl_strerror(int code)
 
 #else /* CYL__P: one precision's body, written once */
 
-#ifndef CYL__X /* the first body of its working type: it defines the exact path (N8) */
+/* CYL__X: the names of the exact path (N8), the frame type's and its functions', which depend on L
+   alone: the float API computed in double shares the double API's (with the FMA: its helper's). */
+#if CYL__LD && !CYL__RD && defined(CYL__LFASTFMA)
+#define CYL__X(x) cyl__dx_##x
+#elif CYL__LD && !CYL__RD
+#define CYL__X(x) cyl__d_##x
+#else
 #define CYL__X(x) CYL__P(x)
 #define CYL__XOWN
 #endif
@@ -490,10 +490,7 @@ CYL__INL CYL__P(pair) CYL__P(pr)(CYL__L x, CYL__L y)
 { CYL__P(pair) p; CYL__LANE(p, 0) = x, CYL__LANE(p, 1) = y; return p; }
 /* x + y − s for s = x + y rounded, exactly (Knuth's TwoSum). */
 CYL__INL CYL__L CYL__P(sum_err)(CYL__L x, CYL__L y, CYL__L s)
-{
-    CYL__L z = s - x;
-    return (x - (s - z)) + (y - z);
-}
+{ CYL__L z = s - x; return (x - (s - z)) + (y - z); }
 CYL__INL void CYL__P(mul3)(CYL__L p, const CYL__L x[3], CYL__L z[3])
 { z[0] = x[0] * p, z[1] = x[1] * p, z[2] = x[2] * p; }
 CYL__INL CYL__L CYL__P(amax)(const CYL__L x[3])
@@ -532,10 +529,7 @@ static inline CYL__R CYL__P(toward0)(CYL__R x)
 
 /* ab − cd within 2u of itself (Kahan's algorithm with FMA; Jeannerod, Louvet, Muller 2013). */
 CYL__INL CYL__L CYL__P(dop)(CYL__L a, CYL__L b, CYL__L c, CYL__L d)
-{
-    CYL__L w = c * d;
-    return CYL__LFMA(a, b, -w) + CYL__LFMA(-c, d, w);
-}
+{ CYL__L w = c * d; return CYL__LFMA(a, b, -w) + CYL__LFMA(-c, d, w); }
 /* x × y with each component within 2u of itself (the exact path's: N1). */
 CYL__INL void CYL__P(cross_exact)(const CYL__L x[3], const CYL__L y[3], CYL__L z[3])
 {
@@ -545,7 +539,7 @@ CYL__INL void CYL__P(cross_exact)(const CYL__L x[3], const CYL__L y[3], CYL__L z
 }
 
 /* ------------------------------------------------------------------ entry points */
-CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits);
+CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits, int compact);
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f);
 CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f);
 
@@ -579,7 +573,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
         return CYL__P(cold)(ray, cyl, opts, want, hits);
     if (sizeof(CYL__L) > sizeof(CYL__R)) /* t representable in R: in the range (in_range) */
         f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);
-    ok = CYL__P(answer)(&f, opts, want, hits);
+    ok = CYL__P(answer)(&f, opts, want, hits, 0);
     return ok == CYL__DOUBT ? CYL__P(cold)(ray, cyl, opts, want, hits) : ok;
 }
 
@@ -851,8 +845,9 @@ CYL__INL int CYL__P(bounds)(const CYL__P(frame) *f, const CYL__L v[4], CYL__L sq
 }
 
 /* The crossings in t order; occluded and intersect stop at the first, and nothing is emitted
-   before every decision it depends on is certain (CYL_PRECISE: else CYL__DOUBT, N9). */
-CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits)
+   before every decision it depends on is certain (CYL_PRECISE: else CYL__DOUBT, N9). compact
+   (a literal: the exact path's 1): one emit site for every hit, its code once, for size. */
+CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits, int compact)
 {
     CYL__L v[4], sq = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : 0, l[4] = {0, 0, 0, 0};
     CYL__P(cross) x, y;
@@ -875,12 +870,13 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
             if (y.ok && !(x.ok && want < 2)) y.t = CYL__X(polish)(f, y.t, y.part, sq / f->A, 0);
         }
     }
-    if (x.ok && want < 2) {
+    if (x.ok && want < 2 && !compact) {
         if (want) CYL__P(emit)(f, &x, opts, hits);
         return 1;
     }
-    if (!e) y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan);
-    if (x.ok) CYL__P(emit)(f, &x, opts, &hits[n++]);
+    if (x.ok && want < 2) y = x; /* compact: the one emit below */
+    else if (!e) y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan);
+    if (x.ok && want == 2) CYL__P(emit)(f, &x, opts, &hits[n++]);
     if (y.ok && want) CYL__P(emit)(f, &y, opts, &hits[n]);
     return n + y.ok;
 }
@@ -1097,7 +1093,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     }
     f.par = CYL__P(parallel)(&f) <= 0;
     if (f.exact) CYL__X(exact_frame)(&f);
-    return CYL__P(answer)(&f, opts, want, hits);
+    return CYL__P(answer)(&f, opts, want, hits, 1);
 }
 
 #ifndef CYL__HELPER
@@ -1114,14 +1110,11 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
         cy.a[i] = p0 && p1 ? p1[i] - p0[i] : 0;
         al[i] = (CYL__L)cy.a[i];
     }
-    cy.r = r;
-    m = (CYL__R)CYL__P(amax)(al); /* exact: one of the components */
+    cy.r = r, cy.h = m = (CYL__R)CYL__P(amax)(al); /* exact; 0 or non-finite: intersect reports it */
     if (m > 0 && m <= CYL__RMAX) {
         k = CYL__P(expo)(m);
         for (i = 0; i < 3; i++) x[i] = CYL__P(scale)(cy.a[i], -k);
         cy.h = CYL__P(scale)(CYL__RSQRT(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]), k);
-    } else {
-        cy.h = m; /* 0, or the non-finite value that intersect will report */
     }
     return cy;
 }
@@ -1142,71 +1135,66 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #endif /* CYL__P */
 
 /* NOTES (cited from the code as N1 .. N9); u is the working type's unit roundoff
-   N1. One formulation (DESIGN.md of the project): w = o − c, s = a × d, m = a × w (cross
-       products, never projections: no cancellation for rays near the axis direction or origins
-       far along it), A = s·s, B = m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d, Ha = (h/2)|a|,
-       formed in pairs (s, m), (ζ, z0), (A, B), (P, |m|²): vectors where the compiler has them,
-       one instruction for two, the same bits. The exact path forms s and m with Kahan's FMA
-       difference of products (Jeannerod, Louvet, Muller, Math. Comp. 82, 2013), within 2u each.
-   N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², r²A (else D
-       can be subnormal), Ha and |a|⁴|d|²(|w|² + r²) against one range; every NaN, infinity, zero
-       or out-of-range input fails it and goes to the exact path, which validates in the
-       documented order and scales lengths, d and a by powers of two (exact: its answers to a
-       scene scaled by 2^k are the same bits scaled; the hot path's, without N8's step, agree
-       within t_err). Within the range nothing the bounds use overflows or underflows.
-   N3. Geometric discriminant B² − AC = |a|²·D, D = r²A − P², P = w·s (Ray Tracing Gems,
-       ch. 7; pbrt-v4 cylinders): no difference of large squares for far origins.
-   N4. Stable root pair q = −(B + sgn(B)√(|a|²D)), t = q/A and C/q (Numerical Recipes §5.6);
-       caps by clipping the wall interval with the slab |z0 + tζ| <= Ha (Cychosz and
-       Waggenspack, Graphics Gems IV): watertight at the rim, no separate disk test.
-   N5. Output: v = (z0 + tζ)/|a|; the wall normal y × a (= |a|²x⊥, y = m + t·s = a × x)
-       written from the roots as P|a|²s − h(a × s), h = ∓√(|a|²D), of length |a|²|s|√(P² +
-       h²/|a|²) (s ⊥ a × s): made unit by its two scalars, none of its terms can overflow.
-       t_err: F = |y|² − r²|a|² and G = y·s at t, with bounds EF, EG on their rounding (standard
-       model, Higham, "Accuracy and Stability of Numerical Algorithms", ch. 3; componentwise sums
-       bounded by 2-norms, e.g. |δ(a × w)|₁ <= 3u·√6|a||w|). f(t + δ) = f + 2gδ + Aδ² exactly:
-       where g has the crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F|
-       + EF)/(|G| − EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap:
-       the plane's residual over |ζ| less its bound. The float API computed in double adds t's
-       rounding; its wall root's bound is N9's where first order and below 2^-7 of float's ulp.
-   N6. The plain tier's limits, from rounding what each decision compares: e = D/(r²A) carries
-       a few u·(1 + |o − c|/r)(1 + 2ρ/r) (ρ: the line's distance from the axis): the tangent
-       band's edges blur by that for far origins; a rim, u·(|o − c| + |t d| + h)/h of the half
-       height (a flat disk seen along its axis from an origin on its wall: about u·r/(h·sin));
-       a t range end, u·|t|; a cap crossing, u times the cancellation of z0 ∓ Ha. A ray within
-       2^-8 of the axis' direction would add u/sin to e (far origins: u·|w|/(r·sin)); the
-       double API sends those to the exact path, whose s and m are accurate.
-   N7. Parallel: A <= τ²|a|²|d|² (sin <= τ = CYL_PARALLEL_TOL). Below sin = u a half-ulp change
-       of one component of d makes the ray exactly parallel; yet a ray from the wall can cross
-       it again a few dozen radii along, a crossing its inputs determine (a × d is exact for an
-       axis-aligned a), which the rule drops (test_parallel_rule_drops_secondary_ray_from_wall).
-   N8. The exact path's t: before any decision, each slab end takes one Newton step t − F/F'
-       on its cap plane's residual F = a·x ± H|a| (F' = ζ), each wall root up to three on F =
-       |a × x|² − r²|a|² (F' = 2(a × x)·s; a step leaves about dt²/(2·gap)), x = w + t·d, w
-       exact as a pair, each product's error kept exactly (FMA, or Dekker's split) in a
-       compensated sum (Ogita, Rump, Oishi, SIAM J. Sci. Comput. 26, 2005): F errs by about
-       u|F| + u²(r²|a|² + |a|²|x|²); z0 and ζ are such sums too. With CYL_PRECISE the next step
-       is kept as each t's low part and the rim compares the pairs: a steep ray moves |ζ|/|a|
-       along the axis per unit of t, so an ulp of t can exceed a flat disk's rim margin. The
-       tangent band decides on D from the residual near the closest approach t_c = −B/A: F(t) =
-       g²/A − |a|²D/A for the quadratic, g = (a × x)·s = F'/2, so D = (g² − AF)/|a|² whatever
-       t's rounding (the plain D errs by u·r²A·|w|/r and more). t_c takes one step on g (g' =
-       A); the roots start at t_c ± √(|a|²D)/A (the plain C cancels for an origin on the wall),
-       each refined while its steps stay within that half gap; without roots, a contact is at t_c.
-   N9. The certified layer (CYL_PRECISE on the hot path) takes each comparison an answer depends
-       on (tangent band, rims, t range, entry and exit, both crossings whatever the entry point)
-       only where its operands lie farther apart than their bounds' sum; else the exact path
-       answers. The bounds are a priori, from magnitudes the hot path has: s and m carry about
-       u|a||d| and u|a||w|, so A, B, C, D and the quadratic each root solves (from √(|a|²D), not
-       B² − AC) err at t by at most k(S + t²|a|²|d|²), S = |a|²(|w|² + r²), k = 128u(1 + |a||d|/|s|)
-       (the last term: P's error through s). A root moves by that over √(|a|²D), plus 4u|t|,
-       while this is below √(|a|²D)/A (first order); D by k·S·A/|a|²; a slab end by 64u(|a||w| +
-       Ha + |t||a||d|)/|ζ| + 2u|t|, while |ζ| > 128u|a||d|. A NaN or infinite bound, or a contact
-       inside the band (its roots move by u/√e), certifies nothing. Each crossing the double API
-       emits then takes N8's step (polish): 36 ulps on the hot path, the tier promises 2; the
-       float API's, computed in double, is within 2^-29 already. Helper bodies take CYL_PRECISE
-       calls out of line: the float API's in double where it computes in float; on x86-64 built
-       without the FMA, both APIs' built with it where the CPU has it (CYL_FMA_DISPATCH; not the
-       double API's occluded): one instruction per exact product, nothing contracted or
-       vectorized, the same bits.
+   N1. One formulation (DESIGN.md of the project): w = o − c, s = a × d, m = a × w (cross products, never
+       projections: no cancellation for rays near the axis direction or origins far along it), A = s·s, B =
+       m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d, Ha = (h/2)|a|, formed in pairs (s, m), (ζ, z0), (A, B), (P,
+       |m|²): vectors where the compiler has them, one instruction for two, the same bits. The exact path
+       forms s and m with Kahan's FMA difference of products (Jeannerod, Louvet, Muller, Math. Comp. 82,
+       2013), within 2u each.
+   N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², r²A (else D can be
+       subnormal), Ha and |a|⁴|d|²(|w|² + r²) against one range; every NaN, infinity, zero or out-of-range
+       input fails it and goes to the exact path, which validates in the documented order and scales lengths,
+       d and a by powers of two (exact: its answers to a scene scaled by 2^k are the same bits scaled; the hot
+       path's, without N8's step, agree within t_err). Within the range nothing the bounds use overflows or
+       underflows.
+   N3. Geometric discriminant B² − AC = |a|²·D, D = r²A − P², P = w·s (Ray Tracing Gems, ch. 7; pbrt-v4
+       cylinders): no difference of large squares for far origins.
+   N4. Stable root pair q = −(B + sgn(B)√(|a|²D)), t = q/A and C/q (Numerical Recipes §5.6); caps by clipping
+       the wall interval with the slab |z0 + tζ| <= Ha (Cychosz and Waggenspack, Graphics Gems IV): watertight
+       at the rim, no separate disk test.
+   N5. Output: v = (z0 + tζ)/|a|; the wall normal y × a (= |a|²x⊥, y = m + t·s = a × x) written from the roots
+       as P|a|²s − h(a × s), h = ∓√(|a|²D), of length |a|²|s|√(P² + h²/|a|²) (s ⊥ a × s): made unit by its two
+       scalars, none of its terms can overflow. t_err: F = |y|² − r²|a|² and G = y·s at t, with bounds EF, EG
+       on their rounding (standard model, Higham, "Accuracy and Stability of Numerical Algorithms", ch. 3;
+       componentwise sums bounded by 2-norms, e.g. |δ(a × w)|₁ <= 3u·√6|a||w|). f(t + δ) = f + 2gδ + Aδ²
+       exactly: where g has the crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F| +
+       EF)/(|G| − EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap: the plane's
+       residual over |ζ| less its bound. The float API computed in double adds t's rounding; its wall root's
+       bound is N9's where first order and below 2^-7 of float's ulp.
+   N6. The plain tier's limits, from rounding what each decision compares: e = D/(r²A) carries a few u·(1 + |o
+       − c|/r)(1 + 2ρ/r) (ρ: the line's distance from the axis): the tangent band's edges blur by that for far
+       origins; a rim, u·(|o − c| + |t d| + h)/h of the half height (a flat disk seen along its axis from an
+       origin on its wall: about u·r/(h·sin)); a t range end, u·|t|; a cap crossing, u times the cancellation
+       of z0 ∓ Ha. A ray within 2^-8 of the axis' direction would add u/sin to e (far origins: u·|w|/(r·sin));
+       the double API sends those to the exact path, whose s and m are accurate.
+   N7. Parallel: A <= τ²|a|²|d|² (sin <= τ = CYL_PARALLEL_TOL). Below sin = u a half-ulp change of one
+       component of d makes the ray exactly parallel; yet a ray from the wall can cross it again a few dozen
+       radii along, a crossing its inputs determine (a × d is exact for an axis-aligned a), which the rule
+       drops (test_parallel_rule_drops_secondary_ray_from_wall).
+   N8. The exact path's t: before any decision, each slab end takes one Newton step t − F/F' on its cap
+       plane's residual F = a·x ± H|a| (F' = ζ), each wall root up to three on F = |a × x|² − r²|a|² (F' = 2(a
+       × x)·s; a step leaves about dt²/(2·gap)), x = w + t·d, w exact as a pair, each product's error kept
+       exactly (FMA, or Dekker's split) in a compensated sum (Ogita, Rump, Oishi, SIAM J. Sci. Comput. 26,
+       2005): F errs by about u|F| + u²(r²|a|² + |a|²|x|²); z0 and ζ are such sums too. With CYL_PRECISE the
+       next step is kept as each t's low part and the rim compares the pairs: a steep ray moves |ζ|/|a| along
+       the axis per unit of t, so an ulp of t can exceed a flat disk's rim margin. The tangent band decides on
+       D from the residual near the closest approach t_c = −B/A: F(t) = g²/A − |a|²D/A for the quadratic, g =
+       (a × x)·s = F'/2, so D = (g² − AF)/|a|² whatever t's rounding (the plain D errs by u·r²A·|w|/r and
+       more). t_c takes one step on g (g' = A); the roots start at t_c ± √(|a|²D)/A (the plain C cancels for
+       an origin on the wall), each refined while its steps stay within that half gap; without roots, a
+       contact is at t_c.
+   N9. The certified layer (CYL_PRECISE on the hot path) takes each comparison an answer depends on (tangent
+       band, rims, t range, entry and exit, both crossings whatever the entry point) only where its operands
+       lie farther apart than their bounds' sum; else the exact path answers. The bounds are a priori, from
+       magnitudes the hot path has: s and m carry about u|a||d| and u|a||w|, so A, B, C, D and the quadratic
+       each root solves (from √(|a|²D), not B² − AC) err at t by at most k(S + t²|a|²|d|²), S = |a|²(|w|² +
+       r²), k = 128u(1 + |a||d|/|s|) (the last term: P's error through s). A root moves by that over √(|a|²D),
+       plus 4u|t|, while this is below √(|a|²D)/A (first order); D by k·S·A/|a|²; a slab end by 64u(|a||w| +
+       Ha + |t||a||d|)/|ζ| + 2u|t|, while |ζ| > 128u|a||d|. A NaN or infinite bound, or a contact inside the
+       band (its roots move by u/√e), certifies nothing. Each crossing the double API emits then takes N8's
+       step (polish): 36 ulps on the hot path, the tier promises 2; the float API's, computed in double, is
+       within 2^-29 already. Helper bodies take CYL_PRECISE calls out of line: the float API's in double where
+       it computes in float; on x86-64 built without the FMA, both APIs' built with it where the CPU has it
+       (CYL_FMA_DISPATCH; not the double API's occluded): one instruction per exact product, nothing
+       contracted or vectorized, the same bits.
 */
