@@ -15,7 +15,7 @@
 #             CYL_FMAF/CYL_FMA/CYL_DEF and the tolerance macros), two translation units linked
 #             together (the last two also as C++11); the contract suite with CYL_FLOAT_WIDE=0,
 #             with CYL_NO_FAST_PATH (not under V=2), with a hardware FMA (-mfma, where this
-#             machine has one), and with every entry point forced inline
+#             machine has one), built for size (-Os, V=2 only), and with every entry point forced inline
 #             (tests/config/cfg_forced_inline.h; not under V=2, where that is the default)
 #   prereq    -ffast-math must stop the build at the header's #error (gcc and clang)
 # make check also builds and runs every topic alone (tests-topics: proves test-one's builds).
@@ -104,6 +104,12 @@ $(eval $(call TESTS_CFG_RUNNER,dispatch,tests/config/cfg_dispatch_main.c tests/c
 # and the pairs (N1) as structs, as targets without x86-64's or AArch64's vectors form them,
 # giving the same bits as the vectors here.
 $(eval $(call TESTS_CFG_RUNNER,pair_struct,tests/config/cfg_dispatch_main.c tests/config/cfg_dispatch_other.c bench/cases.c,-Ibench -O2 -std=gnu99 -DCFG_PAIR_STRUCT,c))
+# Built for size (-Os, what a firmware uses; the last -O wins): the entry points are then not
+# forced inline, and the exact path reuses the caller's frame (CYL__SCRATCH). (v1's
+# test_float does not build at -Os with -Werror: gcc 12's -Wstringop-overflow in its order2.)
+$(eval $(call TESTS_CFG_RUNNER,size_float,tests/test_float.c,-Os,c))
+$(eval $(call TESTS_CFG_RUNNER,size_double,tests/test_double.c,-Os,c))
+$(eval $(call TESTS_CFG_RUNNER,size_float_narrow,tests/test_float.c,-Os -DCYL_FLOAT_WIDE=0,c))
 endif
 ifeq ($(HOST_FMA),1)
 $(eval $(call TESTS_CFG_RUNNER,fma_float,tests/test_float.c,-mfma,c))

@@ -150,8 +150,10 @@
    site (gcc keeps an entry point called from several places out of line otherwise). */
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE_SIZE__)
 #define CYL__INL static inline __attribute__((always_inline))
-#else
+#define CYL__SCRATCH(f) 0
+#else /* the frame is in memory: the exact path reuses it (its stack, not another) */
 #define CYL__INL static inline
+#define CYL__SCRATCH(f) (f)
 #endif
 #ifndef CYL_DEF
 #define CYL_DEF CYL__INL
@@ -471,7 +473,7 @@ static CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L 
 /* One crossing of the ray with the surface; h: ∓√(|a|²D) at a wall (entry −, exit +). */
 typedef struct CYL__P(cross) { CYL__L t, h; int part, ok, doubt; unsigned flags; } CYL__P(cross);
 
-static int CYL__P(cold)(const CYL__N(ray) *, const CYL__N(cylinder) *, unsigned, int, CYL__N(hit) *);
+static int CYL__P(cold)(const CYL__N(ray) *, const CYL__N(cylinder) *, unsigned, int, CYL__N(hit) *, CYL__P(frame) *);
 
 /* ------------------------------------------------------------------ small tools */
 CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return CYL__LABS(x); }
@@ -570,11 +572,11 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
     f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
     if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u)
-        return CYL__P(cold)(ray, cyl, opts, want, hits);
+        return CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
     if (sizeof(CYL__L) > sizeof(CYL__R)) /* t representable in R: in the range (in_range) */
         f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);
     ok = CYL__P(answer)(&f, opts, want, hits, 0);
-    return ok == CYL__DOUBT ? CYL__P(cold)(ray, cyl, opts, want, hits) : ok;
+    return ok == CYL__DOUBT ? CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f)) : ok;
 }
 
 #ifdef CYL__HELPER /* the handoff's target: one out-of-line copy for every call site */
@@ -620,10 +622,7 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     f->zeta = CYL__LANE(z, 0), f->z0 = CYL__LANE(z, 1), f->A = CYL__LANE(ab, 0), f->B = CYL__LANE(ab, 1);
     f->P = CYL__LANE(pm, 0), f->mm = CYL__LANE(pm, 1);
     f->ad = f->A + f->zeta * f->zeta, f->aww = f->mm + f->z0 * f->z0; /* |a|²|d|², |a|²|w|² */
-    f->aa = CYL__P(dot)(f->a, f->a);
-    f->r2 = f->r * f->r;
-    f->r2aa = f->r2 * f->aa;
-    f->C = f->mm - f->r2aa;
+    f->aa = CYL__P(dot)(f->a, f->a), f->r2 = f->r * f->r, f->r2aa = f->r2 * f->aa, f->C = f->mm - f->r2aa;
     /* P = w·s = −m·d: with its accurate s and m the exact path takes the one of smaller error */
     if (f->cold && f->aww * f->A > f->mm * f->ad) f->P = -CYL__P(dot)(f->m, f->d);
     f->D = f->r2 * f->A - f->P * f->P; /* B² − AC = |a|²D (N3) */
@@ -1078,22 +1077,23 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
 }
 
 /* The exact path: validates, scales, answers on the same decisions; ratios out of range even
-   scaled (r below 2^-300 |o − c|, double) are answered with r raised to it and t_err = inf. */
+   scaled (r below 2^-300 |o − c|, double) are answered with r raised to it and t_err = inf.
+   fs: the caller's frame to reuse (CYL__SCRATCH), else 0. */
 CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
-                           int want, CYL__N(hit) *hits)
+                           int want, CYL__N(hit) *hits, CYL__P(frame) *fs)
 {
-    CYL__P(frame) f;
+    CYL__P(frame) own, *f = fs ? fs : &own;
     int rc = CYL__P(validate)(ray, cyl, opts);
     if (rc) return rc;
-    CYL__P(load_scaled)(&f, ray, cyl);
-    while (!CYL__P(derive)(&f)) { /* one call: it is inlined once */
-        if (!f.exact) return CYL_MISS;
-        f.r = CYL__P(max)(f.r, CYL__LSQRT(f.lo) * 2), f.H = CYL__P(max)(f.H, f.lo * 2);
-        f.exact = 0;
+    CYL__P(load_scaled)(f, ray, cyl);
+    while (!CYL__P(derive)(f)) { /* one call: it is inlined once */
+        if (!f->exact) return CYL_MISS;
+        f->r = CYL__P(max)(f->r, CYL__LSQRT(f->lo) * 2), f->H = CYL__P(max)(f->H, f->lo * 2);
+        f->exact = 0;
     }
-    f.par = CYL__P(parallel)(&f) <= 0;
-    if (f.exact) CYL__X(exact_frame)(&f);
-    return CYL__P(answer)(&f, opts, want, hits, 1);
+    f->par = CYL__P(parallel)(f) <= 0;
+    if (f->exact) CYL__X(exact_frame)(f);
+    return CYL__P(answer)(f, opts, want, hits, 1);
 }
 
 #ifndef CYL__HELPER
