@@ -981,7 +981,7 @@ CYL__COLD void CYL__P(exact_frame)(CYL__P(frame) *f)
 
 /* t onto its residual's root by Newton steps on compensated sums (N8): a cap plane's a·x ± H|a|
    (one), the wall's |a × x|² − r²|a|² (up to three, each leaving dt²/(2·gap); kept if it moved
-   less than gap, half the roots' distance). *lo (if lo): the low part (the wall: one more step). */
+   less than gap, half the roots' distance). *lo (if lo): the low part (the wall: one more, as held). */
 CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap, CYL__L *lo)
 {
     CYL__L v = t, dt, g, sa[2], ra[3], H, Hh, zh, zl;
@@ -1003,7 +1003,7 @@ CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__
         if (!(dt * dt > gap * CYL__LU * CYL__P(abs)(v))) break;
     }
     if (!(CYL__P(abs)(v - t) < gap)) return t;
-    if (lo && (dt = -CYL__P(resid)(f, ra, v, &g) / (2 * g), CYL__P(abs)(dt) < gap))
+    if (lo && (dt = -CYL__P(resid)(f, ra, v, &g) / (2 * g), CYL__P(abs)(v + dt - t) < gap))
         t = v + dt, *lo = CYL__P(sum_err)(v, dt, t), v = t; /* v: the pair rounded, as decided */
     return v;
 }
