@@ -850,7 +850,7 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
 {
     CYL__L v[4], sq = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : 0, l[4] = {0, 0, 0, 0};
     CYL__P(cross) x, y;
-    int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0, pol;
+    int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0, pol, alone;
     unsigned tan = kind == 1 ? CYL_F_TANGENT : 0u;
     if (e && CYL__P(band_doubt)(f)) return CYL__DOUBT;
     if (kind == 0 || (tan && (opts & CYL_NO_TANGENT))) return 0;
@@ -860,20 +860,20 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
     if (f->cold && f->exact) CYL__X(refine)(f, v, opts & CYL_PRECISE ? l : 0); /* N8 */
     pol = e && sizeof(CYL__L) == sizeof(CYL__R) && want; /* the double API's t to an ulp */
     if (e && CYL__P(bounds)(f, v, sq, e)) return CYL__DOUBT;
-    x = CYL__P(crossing)(f, opts, 0, v, e, l, sq, tan); /* entry, then exit: no loop, so */
+    x = CYL__P(crossing)(f, opts, 0, v, e, l, sq, tan), alone = x.ok && want < 2; /* entry, then exit: no loop, so */
     if (e) { /* both certain, whatever the entry point: */ /* that k and the arrays fold away */
         y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan); /* each answers on one path */
         if (x.doubt || y.doubt) return CYL__DOUBT;
         if (pol) { /* each crossing emitted moved onto its residual's root */
             if (x.ok) x.t = CYL__X(polish)(f, x.t, x.part, sq / f->A, 0);
-            if (y.ok && !(x.ok && want < 2)) y.t = CYL__X(polish)(f, y.t, y.part, sq / f->A, 0);
+            if (y.ok && !alone) y.t = CYL__X(polish)(f, y.t, y.part, sq / f->A, 0);
         }
     }
-    if (x.ok && want < 2 && !compact) {
+    if (alone && !compact) {
         if (want) CYL__P(emit)(f, &x, opts, hits);
         return 1;
     }
-    if (x.ok && want < 2) y = x; /* compact: the one emit below */
+    if (alone) y = x; /* compact: the one emit below */
     else if (!e) y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan);
     if (x.ok && want == 2) CYL__P(emit)(f, &x, opts, &hits[n++]);
     if (y.ok && want) CYL__P(emit)(f, &y, opts, &hits[n]);
