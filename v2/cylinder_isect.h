@@ -354,7 +354,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__LSPLIT CYL__IFL(134217729.0, 4097.0f) /* 2^27 + 1, 2^12 + 1 */
 #define CYL__LTINY CYL__IFL(4.9406564584124654e-324, 1.40129846e-45f) /* 2^-1074, 2^-149 */
 #define CYL__HOT_LO CYL__IFL(4.9090934652977266e-91, 8.67361738e-19f) /* range, N2: 2^-300, 2^-60 */
-#define CYL__HOT_HI CYL__IFL(8.452712498170644e270, 1.32922800e36f) /* 2^900, 2^120 */
+#define CYL__HOT_HI CYL__IFL(2.9073548971824276e135, 1.15292150e18f) /* 2^450, 2^60 */
 #define CYL__COLD_LO CYL__IFL(2.4099198651028841e-181, 1.32348898e-23f) /* scaled r²|a|²: 2^-600, 2^-76 */
 #define CYL__LINF (CYL__LMAX * 2)
 
@@ -597,11 +597,11 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 /* ------------------------------------------------------------------ frame */
 /* Everything the decisions use, from the cross products s = a × d and m = a × w (N1), and the
    range test (N2) on derived values: r|a|, r²|a|², |a|²|d|², Ha and (hot path) r²A and the steep
-   margin at least lo; |a|²(|w|² + r²), its product with |a|²|d|² and D's size at most hi; Ha
-   finite unless h is. Every NaN, infinity, zero or negative of o, d, c, a, r, h fails it. */
+   margin at least lo; |a|²(|w|² + r²), |a|²|d|² and r²A (>= D) summed at most hi; Ha finite
+   unless h is. Every NaN, infinity, zero or negative of o, d, c, a, r, h fails it. */
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
-    CYL__L ml[3], S, L2, lo, hi;
+    CYL__L ml[3], S, lo;
     CYL__P(pair) dw[3], sm[3], q[3], z, ab, pm; /* lanes: (d, w) give (s, m) */
     int i;
     dw[0] = CYL__P(pr)(f->d[0], f->w[0]), dw[1] = CYL__P(pr)(f->d[1], f->w[1]), dw[2] = CYL__P(pr)(f->d[2], f->w[2]);
@@ -628,15 +628,14 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     f->D = f->r2 * f->A - f->P * f->P; /* B² − AC = |a|²D (N3) */
     f->sqaa = CYL__LSQRT(f->aa);
     f->Ha = f->H * f->sqaa;
-    S = f->aww + f->r2aa, L2 = S * f->ad; /* L2 >= |a|²·|a|²D, L2/|a|² >= D */
+    S = f->aww + f->r2aa;
     /* min and max pass a NaN on only as their second operand: h's is Ha's, the others' S's */
     lo = CYL__P(min)(CYL__P(min)(f->r * f->sqaa, f->r2aa), CYL__P(min)(f->ad, f->Ha));
     /* the hot path's margin for the exact path: parallel rays and, unless L makes the inputs'
        products exact, those whose s or m loses 8 bits (N6): d or o − c within 2^-8 of the axis */
     if (!f->cold) lo = CYL__P(min)(CYL__P(min)(sizeof(CYL__L) > sizeof(CYL__R) ? CYL__P(parallel)(f) :
         CYL__P(min)(65536 * f->A - f->ad, 65536 * f->mm - f->aww), f->r2 * f->A), lo);
-    hi = CYL__P(max)(CYL__P(max)(S, L2), L2 / f->aa);
-    return lo >= f->lo && hi <= CYL__HOT_HI && !(f->Ha - f->H > CYL__LMAX);
+    return lo >= f->lo && S + f->ad + f->r2 * f->A <= CYL__HOT_HI && !(f->Ha - f->H > CYL__LMAX);
 }
 
 /* ------------------------------------------------------------------ decisions */
@@ -1142,11 +1141,11 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        forms s and m with Kahan's FMA difference of products (Jeannerod, Louvet, Muller, Math. Comp. 82,
        2013), within 2u each.
    N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², r²A (else D can be
-       subnormal), Ha and |a|⁴|d|²(|w|² + r²) against one range; every NaN, infinity, zero or out-of-range
-       input fails it and goes to the exact path, which validates in the documented order and scales lengths,
-       d and a by powers of two (exact: its answers to a scene scaled by 2^k are the same bits scaled; the hot
-       path's, without N8's step, agree within t_err). Within the range nothing the bounds use overflows or
-       underflows.
+       subnormal), Ha and |a|²(|w|² + r²) against one range, [2^-300, 2^450] in double: the largest products
+       the bounds form, such as |a|²D <= r²|a|²·|a|²|d|², stay below 2^900. Every NaN, infinity, zero or
+       out-of-range input fails it and goes to the exact path, which validates in the documented order and
+       scales lengths, d and a by powers of two (exact: its answers to a scene scaled by 2^k are the same bits
+       scaled; the hot path's, without N8's step, agree within t_err).
    N3. Geometric discriminant B² − AC = |a|²·D, D = r²A − P², P = w·s (Ray Tracing Gems, ch. 7; pbrt-v4
        cylinders): no difference of large squares for far origins.
    N4. Stable root pair q = −(B + sgn(B)√(|a|²D)), t = q/A and C/q (Numerical Recipes §5.6); caps by clipping
