@@ -109,13 +109,13 @@
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
    t_err held the exact t on all 510,492 float and 521,305 double hits; nothing misclassified
    beyond the band, default or CYL_PRECISE. t on well-conditioned hits: CYL_PRECISE within
-   0.5 ulps in every family, both APIs, at 392 (float) and 648 (double) instructions per
+   0.5 ulps in every family, both APIs, at 389 (float) and 646 (double) instructions per
    capped call, 3.3 and 5.5 times the end-point routine's (REPORT's headline; `make cost`).
-   Default: float within 0.5 ulps; double within 0.5 on the tiny family (the exact path's,
-   N8), on the hot path within 7 ulps on the well family's walls, 14.4 on its caps, 35.9 on
-   the huge family's caps (z0 + Ha cancels, N6), 271 for origins far along the axis (thin).
-   Per unit of the data's condition κ (o − c, d, a, r, h each moved by a relative u move t by
-   κ·u·|t|; REPORT's ulps/κ) double errs by at most 1.8 on those families, 2.7 on all.
+   Default: float within 0.5 ulps; double within 0.5 on the tiny and huge families (2^∓400:
+   the exact path's, N2, N8), on the hot path within 7 ulps on the well family's walls, 14.4
+   on its caps (z0 + Ha cancels, N6), 271 for origins far along the axis (thin). Per unit of
+   the data's condition κ (o − c, d, a, r, h each moved by a relative u move t by κ·u·|t|;
+   REPORT's ulps/κ) double errs by at most 1.7 on those families, 2.7 on all.
 
    NOT DONE: ray packets or batches, BVHs, oblique cylinders or cones, texture coordinates beyond
    v, nudging spawned rays (use tmin or the previous hit's t_err). Needs IEEE-754 with
