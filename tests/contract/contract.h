@@ -48,6 +48,7 @@
 #define T_LDEXP ldexp
 #define T_BIG_EXP 400 /* lengths scaled by 2^+-400: squares stay finite only with prescaling */
 #define T_DIR_EXP 500 /* d and a scaled by 2^+-500 */
+#define T_EDGE_EXPS 221, 225, 263, 323 /* lengths and d by 2^k: v2's hot range edge, 2^450 */
 #define T_MAX_EXP DBL_MAX_EXP
 #else
 #define T float
@@ -61,6 +62,7 @@
 #define T_LDEXP ldexpf
 #define T_BIG_EXP 50 /* lengths scaled by 2^+-50: squares stay finite only with prescaling */
 #define T_DIR_EXP 60 /* d and a scaled by 2^+-60 */
+#define T_EDGE_EXPS 26, 30, 44, 58 /* lengths and d by 2^k: v2's hot range edge in float, 2^60 */
 #define T_MAX_EXP FLT_MAX_EXP
 #endif
 

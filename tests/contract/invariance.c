@@ -185,6 +185,43 @@ static void test_scale_invariance(void)
     }
 }
 
+/* Lengths and d scaled together by 2^k leave t unchanged. k around the edge of v2's hot range
+ * (N2: |a|²|o − c|², |a|²|d|² and r²A summed at most 2^450 in double, 2^60 in float computed
+ * in float) and beyond it, where the products the bounds form (|a|²D up to their squares)
+ * would overflow on a hot path that took them: the answers agree with k = 0 within their
+ * bounds, part and flags the same. */
+static void test_scale_across_hot_range_edge(void)
+{
+    static const int edge[] = {T_EDGE_EXPS};
+    size_t idx, k, e;
+    const char *name;
+    char m[200];
+    Ray ray0;
+    Cyl cyl0;
+    for (idx = 0; get_any_scene(idx, &ray0, &cyl0, &name); idx++)
+        for (k = 0; k < N_OPT_SETS; k++) {
+            Hit base[2];
+            int n;
+            sentinel(base, 2);
+            n = CYL(intersect_all)(&ray0, &cyl0, opt_sets[k], base);
+            for (e = 0; e < sizeof edge / sizeof edge[0]; e++) {
+                Ray ray = ray0;
+                Cyl cyl = cyl0;
+                Hit hs[2];
+                int j;
+                scale_scene(&ray, &cyl, edge[e], edge[e], 0);
+                snprintf(m, sizeof m, "%s, opts 0x%x, lengths and d*2^%d", name, opt_sets[k], edge[e]);
+                sentinel(hs, 2);
+                EQ_INT(n, CYL(intersect_all)(&ray, &cyl, opt_sets[k], hs), m);
+                for (j = 0; j < n; j++) {
+                    chk_scaled_at(&base[j], &hs[j], &ray, &cyl, edge[e], edge[e], m, __LINE__);
+                    EQ_INT(base[j].part, hs[j].part, m);
+                    EQ_INT(base[j].flags, hs[j].flags, m);
+                }
+            }
+        }
+}
+
 /* Translating o and c together (exactly: dyadic coordinates) moves nothing but the frame. */
 static void test_translation_invariance(void)
 {
@@ -235,6 +272,7 @@ static void run_invariance(void)
     UnitySetTestFile(__FILE__); /* failures point into this file */
     RUN_TEST(test_no_normal_no_errbound_trusted);
     RUN_TEST(test_scale_invariance);
+    RUN_TEST(test_scale_across_hot_range_edge);
     RUN_TEST(test_translation_invariance);
 }
 
