@@ -228,6 +228,9 @@
 #endif
 #if defined(__x86_64__)
 #define CYL__ROOT(x, f, g) __asm__(CYL__VEX("v") "sqrt" f " %0, " CYL__VEX("%0, ") "%0" : "+x"(x))
+/* the two floats at p as a pair of doubles, one instruction (gcc 12 splits the generic form) */
+#define CYL__CVT2(x, p) __asm__(CYL__VEX("v") "cvtps2pd %1, %0" : "=x"(x) : "m"(*(const cyl__float2 *)(p)))
+typedef struct cyl__float2 { float v[2]; } cyl__float2;
 #elif defined(__aarch64__)
 #define CYL__OPAQUE(x) __asm__("" : "+w"(x))
 #define CYL__ROOT(x, f, g) __asm__("fsqrt %" g "0, %" g "0" : "+w"(x))
@@ -255,6 +258,7 @@
 #define CYL__LANE(p, i) (p)[i]
 #else
 #define CYL__PAIR(L, name) typedef struct { L v[2]; } name
+#undef CYL__CVT2 /* it writes a vector */
 #define CYL__EACH(x) do { int k_ = 0; x; k_ = 1; x; } while (0)
 #define CYL__V(p) (p).v[k_]
 #define CYL__LANE(p, i) (p).v[i]
@@ -504,8 +508,7 @@ static inline CYL__R CYL__P(scale)(CYL__R x, int k)
     CYL__R p;
     for (; k > CYL__EBIAS; k -= CYL__EBIAS) x *= 2 / CYL__RMIN;         /* 2^EBIAS */
     for (; k < 1 - CYL__EBIAS; k += CYL__EBIAS - 1) x *= CYL__RMIN;     /* 2^(1 - EBIAS) */
-    b = (CYL__UINT)(k + CYL__EBIAS) << (CYL__MANT - 1);
-    CYL__B(memcpy)(&p, &b, sizeof p);
+    b = (CYL__UINT)(k + CYL__EBIAS) << (CYL__MANT - 1), CYL__B(memcpy)(&p, &b, sizeof p);
     return x * p;
 }
 
@@ -513,21 +516,14 @@ static inline CYL__R CYL__P(scale)(CYL__R x, int k)
 static inline int CYL__P(expo)(CYL__R x)
 {
     CYL__UINT b;
-    int e;
-    CYL__B(memcpy)(&b, &x, sizeof b);
-    e = (int)((b >> (CYL__MANT - 1)) & (CYL__UINT)(2 * CYL__EBIAS + 1));
+    int e = (CYL__B(memcpy)(&b, &x, sizeof b), (int)((b >> (CYL__MANT - 1)) & (CYL__UINT)(2 * CYL__EBIAS + 1)));
     if (e || !(x > 0)) return e - CYL__EBIAS;
     return CYL__P(expo)(x * CYL__P(scale)(1, CYL__MANT)) - CYL__MANT; /* a subnormal */
 }
 
 /* The neighbour of x toward zero in R (x finite, nonzero). */
 static inline CYL__R CYL__P(toward0)(CYL__R x)
-{
-    CYL__UINT b;
-    CYL__B(memcpy)(&b, &x, sizeof b);
-    b -= 1u, CYL__B(memcpy)(&x, &b, sizeof x);
-    return x;
-}
+{ CYL__UINT b; CYL__B(memcpy)(&b, &x, sizeof b), b -= 1u, CYL__B(memcpy)(&x, &b, sizeof x); return x; }
 
 /* ab − cd within 2u of itself (Kahan's algorithm with FMA; Jeannerod, Louvet, Muller 2013). */
 CYL__INL CYL__L CYL__P(dop)(CYL__L a, CYL__L b, CYL__L c, CYL__L d)
@@ -535,8 +531,7 @@ CYL__INL CYL__L CYL__P(dop)(CYL__L a, CYL__L b, CYL__L c, CYL__L d)
 /* x × y with each component within 2u of itself (the exact path's: N1). */
 CYL__INL void CYL__P(cross_exact)(const CYL__L x[3], const CYL__L y[3], CYL__L z[3])
 {
-    z[0] = CYL__P(dop)(x[1], y[2], x[2], y[1]);
-    z[1] = CYL__P(dop)(x[2], y[0], x[0], y[2]);
+    z[0] = CYL__P(dop)(x[1], y[2], x[2], y[1]), z[1] = CYL__P(dop)(x[2], y[0], x[0], y[2]);
     z[2] = CYL__P(dop)(x[0], y[1], x[1], y[0]);
 }
 
@@ -556,12 +551,24 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
 #ifdef CYL__HANDOFF
     if ((opts & CYL_PRECISE) && CYL__HANDOFF_IF(want)) return CYL__HANDOFF(out)(ray, cyl, opts, want, hits);
 #endif
+#if defined(CYL__CVT2) && CYL__LD && !CYL__RD /* float inputs in pairs, as they lie in memory: */
+    { /* ray (o0, o1), (o2, d0), (d1, d2), (tmin, tmax), cylinder (c0, c1), (c2, a0), (a1, a2), (r, h) */
+        const unsigned char *p = (const unsigned char *)ray, *q = (const unsigned char *)cyl;
+        CYL__P(pair) o, od, dd, c, ca, aa, rh;
+        (void)sizeof(char[sizeof *ray == 32 && sizeof *cyl == 32 ? 1 : -1]); /* 8 floats each, packed */
+        CYL__CVT2(o, p); CYL__CVT2(od, p + 8); CYL__CVT2(dd, p + 16); CYL__CVT2(c, q);
+        CYL__CVT2(ca, q + 8); CYL__CVT2(aa, q + 16); CYL__CVT2(rh, q + 24); o -= c, c = od - ca;
+        f.w[0] = o[0], f.w[1] = o[1], f.w[2] = c[0], f.d[0] = od[1], f.d[1] = dd[0], f.d[2] = dd[1];
+        f.a[0] = ca[1], f.a[1] = aa[0], f.a[2] = aa[1], f.r = rh[0], f.H = rh[1] * CYL__K(0.5);
+    }
+#else
     if (sizeof(CYL__L) > sizeof(CYL__R)) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); }
     f.w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0], f.d[0] = (CYL__L)ray->d[0];
     f.w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1], f.d[1] = (CYL__L)ray->d[1];
     f.w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2], f.d[2] = (CYL__L)ray->d[2];
     f.a[0] = (CYL__L)cyl->a[0], f.a[1] = (CYL__L)cyl->a[1], f.a[2] = (CYL__L)cyl->a[2];
     f.r = (CYL__L)cyl->r, f.H = (CYL__L)cyl->h * CYL__K(0.5);
+#endif
     f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX), f.lo = CYL__HOT_LO;
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
     if (CYL__CERT(&f, opts) && sizeof(CYL__L) == sizeof(CYL__R)) { /* w exact, for polish */
@@ -570,7 +577,11 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
             f.wl[i] = CYL__P(sum_err)((CYL__L)ray->o[i], -(CYL__L)cyl->c[i], f.w[i]);
     }
     ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
+#if defined(CYL__CVT2) && CYL__LD && !CYL__RD
+    { CYL__P(pair) t; CYL__CVT2(t, (const unsigned char *)ray + 24); f.tmin = f.rmin = t[0], f.tmax = f.rmax = t[1]; }
+#else
     f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
+#endif
     if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u)
         return CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
     if (sizeof(CYL__L) > sizeof(CYL__R)) /* t representable in R: in the range (in_range) */
@@ -785,10 +796,7 @@ CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, uns
 
 /* v of a wall point (N5), kept within the tube's half height. */
 CYL__INL CYL__L CYL__P(axial_v)(const CYL__P(frame) *f, CYL__L t)
-{
-    CYL__L v = (f->z0 + t * f->zeta) / f->sqaa;
-    return CYL__P(max)(-f->H, CYL__P(min)(v, f->H));
-}
+{ CYL__L v = (f->z0 + t * f->zeta) / f->sqaa; return CYL__P(max)(-f->H, CYL__P(min)(v, f->H)); }
 
 /* The hit in the caller's units and type: t, t_err, v unscaled (exact path), t kept in range,
    t_err widened by t's rounding into R and rounded up, v within h/2 after its rounding. */
@@ -910,11 +918,7 @@ CYL__INL CYL__P(acc) CYL__P(acc_prod)(CYL__L x, CYL__L y) /* a sum's first term 
 { CYL__P(acc) q; q.s = x * y, q.c = CYL__P(prod_err)(x, y, q.s); return q; }
 /* The sum as a pair hi + lo, hi = rounded sum. */
 CYL__INL CYL__L CYL__P(acc_pair)(const CYL__P(acc) *q, CYL__L *lo)
-{
-    CYL__L h = q->s + q->c;
-    *lo = q->c - (h - q->s);
-    return h;
-}
+{ CYL__L h = q->s + q->c; *lo = q->c - (h - q->s); return h; }
 
 /* |a| as a pair sa (√ of |a|²'s compensated sum, one Newton step) and −r²|a|² as ra: its
    rounded product, that product's error, the error of r²|a|² (N8). */
@@ -939,8 +943,7 @@ CYL__OUT CYL__L CYL__P(resid)(const CYL__P(frame) *f, const CYL__L ra[3], CYL__L
     int i;
     F.s = ra[0], F.c = ra[1] - ra[2];
     CYL__UNROLL for (i = 0; i < 3; i++) { /* x = w + t·d as pairs xh + xl (w exact as w + wl) */
-        q.s = f->w[i], q.c = f->wl[i];
-        CYL__P(acc_mul)(&q, t, f->d[i]);
+        q.s = f->w[i], q.c = f->wl[i], CYL__P(acc_mul)(&q, t, f->d[i]);
         xh[i] = CYL__P(acc_pair)(&q, &xl[i]);
     }
     CYL__UNROLL for (i = 0; i < 3; i++) { /* y = a × x, componentwise as a pair, into |y|² */
@@ -1071,8 +1074,7 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     f->vlim = CYL__P(min)((CYL__L)cyl->h * CYL__K(0.5), (CYL__L)CYL__RMAX);
     if (sizeof(CYL__L) == sizeof(CYL__R) && f->vlim * 2 > (CYL__L)cyl->h) /* h/2 rounded up */
         f->vlim = (CYL__L)CYL__P(toward0)((CYL__R)f->vlim);
-    f->lo = CYL__COLD_LO;
-    f->cold = f->exact = 1;
+    f->lo = CYL__COLD_LO, f->cold = f->exact = 1;
 }
 
 /* The exact path: validates, scales, answers on the same decisions; ratios out of range even
@@ -1087,8 +1089,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     CYL__P(load_scaled)(f, ray, cyl);
     while (!CYL__P(derive)(f)) { /* one call: it is inlined once */
         if (!f->exact) return CYL_MISS;
-        f->r = CYL__P(max)(f->r, CYL__LSQRT(f->lo) * 2), f->H = CYL__P(max)(f->H, f->lo * 2);
-        f->exact = 0;
+        f->r = CYL__P(max)(f->r, CYL__LSQRT(f->lo) * 2), f->H = CYL__P(max)(f->H, f->lo * 2), f->exact = 0;
     }
     f->par = CYL__P(parallel)(f) <= 0;
     if (f->exact) CYL__X(exact_frame)(f);
@@ -1106,13 +1107,11 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
     int i, k;
     for (i = 0; i < 3; i++) {
         cy.c[i] = p0 && p1 ? p0[i] * (CYL__R)0.5 + p1[i] * (CYL__R)0.5 : 0;
-        cy.a[i] = p0 && p1 ? p1[i] - p0[i] : 0;
-        al[i] = (CYL__L)cy.a[i];
+        al[i] = (CYL__L)(cy.a[i] = p0 && p1 ? p1[i] - p0[i] : 0);
     }
     cy.r = r, cy.h = m = (CYL__R)CYL__P(amax)(al); /* exact; 0 or non-finite: intersect reports it */
     if (m > 0 && m <= CYL__RMAX) {
-        k = CYL__P(expo)(m);
-        for (i = 0; i < 3; i++) x[i] = CYL__P(scale)(cy.a[i], -k);
+        for (k = CYL__P(expo)(m), i = 0; i < 3; i++) x[i] = CYL__P(scale)(cy.a[i], -k);
         cy.h = CYL__P(scale)(CYL__RSQRT(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]), k);
     }
     return cy;
