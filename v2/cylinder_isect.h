@@ -612,7 +612,7 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
    unless h is. Every NaN, infinity, zero or negative of o, d, c, a, r, h fails it. */
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
-    CYL__L ml[3], S, lo;
+    CYL__L ml[3], lo;
     CYL__P(pair) dw[3], sm[3], q[3], z, ab, pm; /* lanes: (d, w) give (s, m) */
     int i;
     dw[0] = CYL__P(pr)(f->d[0], f->w[0]), dw[1] = CYL__P(pr)(f->d[1], f->w[1]), dw[2] = CYL__P(pr)(f->d[2], f->w[2]);
@@ -639,14 +639,13 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     f->D = f->r2 * f->A - f->P * f->P; /* B² − AC = |a|²D (N3) */
     f->sqaa = CYL__LSQRT(f->aa);
     f->Ha = f->H * f->sqaa;
-    S = f->aww + f->r2aa;
-    /* min and max pass a NaN on only as their second operand: h's is Ha's, the others' S's */
+    /* min passes a NaN on only as its second operand (h's is Ha's); the sum passes every one */
     lo = CYL__P(min)(CYL__P(min)(f->r * f->sqaa, f->r2aa), CYL__P(min)(f->ad, f->Ha));
     /* the hot path's margin for the exact path: parallel rays and, unless L makes the inputs'
        products exact, those whose s or m loses 8 bits (N6): d or o − c within 2^-8 of the axis */
     if (!f->cold) lo = CYL__P(min)(CYL__P(min)(sizeof(CYL__L) > sizeof(CYL__R) ? CYL__P(parallel)(f) :
         CYL__P(min)(65536 * f->A - f->ad, 65536 * f->mm - f->aww), f->r2 * f->A), lo);
-    return lo >= f->lo && S + f->ad + f->r2 * f->A <= CYL__HOT_HI && !(f->Ha - f->H > CYL__LMAX);
+    return lo >= f->lo && f->aww + f->r2aa + f->ad + f->r2 * f->A <= CYL__HOT_HI && !(f->Ha - f->H > CYL__LMAX);
 }
 
 /* ------------------------------------------------------------------ decisions */
