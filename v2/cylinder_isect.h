@@ -742,24 +742,25 @@ CYL__INL int CYL__P(first_order)(const CYL__P(frame) *f, CYL__L e, CYL__L h) { r
 CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x)
 {
     const CYL__L u = CYL__LU, h = CYL__P(abs)(x->h);
-    CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb, ns, Es;
+    CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb, nd;
     if (sizeof(CYL__L) > sizeof(CYL__R) && !f->cold) {
         Gb = CYL__P(root_bound)(f, x->t, h); /* first order, and 2^-7 of R's ulp of t */
         if (CYL__P(first_order)(f, Gb, h) && Gb <= CYL__P(abs)(x->t) * (CYL__L)CYL__IFR(DBL_EPSILON, FLT_EPSILON) / 128)
             return Gb;
     }
-    ns = CYL__LSQRT(f->A), Es = 5 * u * CYL__LSQRT(f->ad); /* s's rounding is u|a||d|'s */
+    nd = CYL__LSQRT(f->ad); /* >= |s|: ad is A plus a square */
     CYL__P(lin)(1, f->m, x->t, f->s, y);
     yy = CYL__P(dot)(y, y), ny = CYL__LSQRT(yy), F = yy - f->r2aa, G = CYL__P(dot)(y, f->s);
-    Ey = CYL__K(7.5) * u * CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * (Es + 4 * u * ns) + 2 * u * ny;
-    Fb = CYL__P(abs)(F) * (1 + 2 * u) + Ey * (2 * ny + Ey) + 4 * u * yy + 6 * u * f->r2aa;
-    EG = Ey * ns + (ny + Ey) * Es + 4 * u * ny * ns; /* |s| itself where it scales: steep rays */
-    EA = Es * (2 * ns + Es) + 4 * u * f->A;
+    /* y's error, widened to cover |y|²'s, r²|a|²'s and y·s's roundings too; s's is u|a||d|'s
+       (steep rays: |s| itself scales the rest); |F|'s own is folded into EA and the factor (N5) */
+    Ey = 13 * u * (CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * nd + ny);
+    Fb = CYL__P(abs)(F) + Ey * (2 * ny + Ey), EG = Ey * CYL__LSQRT(f->A) + (ny + Ey) * 5 * u * nd;
+    EA = 32 * u * f->ad;
     /* G with the crossing's sign (entry negative), any sign for a tangent contact */
     Gb = (x->flags & CYL_F_TANGENT ? CYL__P(abs)(G) : x->flags & CYL_F_INSIDE ? G : -G) - EG;
-    if (Gb > 0 && Gb * Gb >= (f->A + EA) * Fb) return Fb / Gb * (1 + 32 * u);
+    if (Gb > 0 && Gb * Gb >= (f->A + EA) * Fb) return Fb / Gb * (1 + 48 * u);
     if (!(f->A > EA)) return CYL__LINF;
-    return (2 * (CYL__P(abs)(G) + EG) + CYL__LSQRT((f->A + EA) * Fb)) / (f->A - EA) * (1 + 32 * u);
+    return (2 * (CYL__P(abs)(G) + EG) + CYL__LSQRT((f->A + EA) * Fb)) / (f->A - EA) * (1 + 48 * u);
 }
 
 /* t_err of a cap crossing (N5): the plane's residual z0 + tζ ∓ Ha over |ζ|, both bounded. */
@@ -767,10 +768,9 @@ CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x
 {
     const CYL__L u = CYL__LU, nd = CYL__LSQRT(f->ad);
     CYL__L g = f->z0 + x->t * f->zeta - (x->part == CYL_CAP_HIGH ? f->Ha : -f->Ha);
-    CYL__L Eg = 5 * u * (CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * nd) + 4 * u * f->Ha +
-                2 * u * CYL__P(abs)(g);
+    CYL__L Eg = 5 * u * (CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * nd + f->Ha); /* |g|'s: the factor */
     CYL__L den = CYL__P(abs)(f->zeta) - 4 * u * nd;
-    return den > 0 ? (CYL__P(abs)(g) + Eg) / den * (1 + 32 * u) : CYL__LINF;
+    return den > 0 ? (CYL__P(abs)(g) + Eg) / den * (1 + 36 * u) : CYL__LINF;
 }
 
 /* The unit normal (N5). The wall's outward one is y × a at the crossing, which from the roots
@@ -802,7 +802,7 @@ CYL__INL CYL__L CYL__P(axial_v)(const CYL__P(frame) *f, CYL__L t)
 CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts, CYL__N(hit) *hit)
 {
     CYL__L n[3] = {0, 0, 0}, t = x->t, err = CYL__LINF, v;
-    CYL__R tr, vr;
+    CYL__R tr, vr, er;
     v = x->part == CYL_SIDE ? CYL__P(axial_v)(f, t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
     if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, x, opts, n);
     if (!(opts & CYL_NO_ERRBOUND))
@@ -813,17 +813,15 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsig
         err = f->exact ? CYL__LT(scale)(err, f->et) + CYL__LTINY + CYL__P(abs)(t - t0) : CYL__LINF;
         v = CYL__P(max)(-f->vlim, CYL__P(min)(CYL__LT(scale)(v, f->ev), f->vlim));
     }
-    tr = (CYL__R)t, vr = (CYL__R)v;
+    tr = (CYL__R)t, vr = (CYL__R)v, er = (CYL__R)err;
     if (sizeof(CYL__L) > sizeof(CYL__R)) {
         CYL__OPAQUE(tr);
-        if (!(opts & CYL_NO_ERRBOUND)) { /* t rounded to R: its rounding joins the bound */
-            err = (err + CYL__P(abs)((CYL__L)tr - t)) * (1 + CYL__K(2.384185791015625e-07)) +
-                  CYL__K(1.40129846432481707e-45);
-            if (err > (CYL__L)CYL__RMAX) err = CYL__LINF;
-        }
+        if (!(opts & CYL_NO_ERRBOUND)) /* t's rounding to R joins the bound, rounded up in R */
+            er = (CYL__R)(err + CYL__P(abs)((CYL__L)tr - t)), /* (beyond R's range: inf) */
+            er = er * (1 + (CYL__R)2.384185791015625e-07) + (CYL__R)1.40129846432481707e-45;
         if (CYL__P(abs)((CYL__L)vr) > f->vlim) vr = CYL__P(toward0)(vr);
     }
-    hit->t = tr, hit->t_err = (CYL__R)err, hit->v = vr;
+    hit->t = tr, hit->t_err = er, hit->v = vr;
     hit->n[0] = (CYL__R)n[0], hit->n[1] = (CYL__R)n[1], hit->n[2] = (CYL__R)n[2];
     hit->part = x->part, hit->flags = x->flags;
 }
@@ -1153,9 +1151,11 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        as P|a|²s − h(a × s), h = ∓√(|a|²D), of length |a|²|s|√(P² + h²/|a|²) (s ⊥ a × s): made unit by its two
        scalars, none of its terms can overflow. t_err: F = |y|² − r²|a|² and G = y·s at t, with bounds EF, EG
        on their rounding (standard model, Higham, "Accuracy and Stability of Numerical Algorithms", ch. 3;
-       componentwise sums bounded by 2-norms, e.g. |δ(a × w)|₁ <= 3u·√6|a||w|). f(t + δ) = f + 2gδ + Aδ²
-       exactly: where g has the crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F| +
-       EF)/(|G| − EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap: the plane's
+       componentwise sums bounded by 2-norms, e.g. |δ(a × w)|₁ <= 3u·√6|a||w|): y errs by at most Ey =
+       13u(|a||w| + |t||a||d| + |y|) (|s| <= |a||d|), which leaves room for the roundings of |y|², r²|a|² and
+       y·s: EF = Ey(2|y| + Ey), EG = |s|Ey + 5u|a||d|(|y| + Ey), s erring by 5u|a||d|. f(t + δ) = f + 2gδ +
+       Aδ² exactly: where g has the crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F|
+       + EF)/(|G| − EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap: the plane's
        residual over |ζ| less its bound. The float API computed in double adds t's rounding; its wall root's
        bound is N9's where first order and below 2^-7 of float's ulp.
    N6. The plain tier's limits, from rounding what each decision compares: e = D/(r²A) carries a few u·(1 + |o
