@@ -241,7 +241,7 @@ typedef struct cyl__float2 { float v[2]; } cyl__float2;
 #define CYL__B(f) f
 #define CYL__LAUNDER(p) (void)0
 #endif
-#if defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 8) /* gcc -O2 keeps 3-trip loops */
+#if (defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 8)) && !defined(__OPTIMIZE_SIZE__) /* -O2 keeps 3-trip loops */
 #define CYL__UNROLL _Pragma("GCC unroll 3")
 #else
 #define CYL__UNROLL
