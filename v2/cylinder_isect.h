@@ -753,7 +753,7 @@ CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *
     yy = CYL__P(dot)(y, y), ny = CYL__LSQRT(yy), F = yy - f->r2aa, G = CYL__P(dot)(y, f->s);
     /* y's error, widened to cover |y|²'s, r²|a|²'s and y·s's roundings too; s's is u|a||d|'s
        (steep rays: |s| itself scales the rest); |F|'s own is folded into EA and the factor (N5) */
-    Ey = 13 * u * (CYL__LSQRT(f->aww) + CYL__P(abs)(x->t) * nd + ny);
+    Ey = 8 * u * (CYL__LSQRT(f->aww) + ny) + CYL__P(abs)(x->t) * (10 * u * nd);
     Fb = CYL__P(abs)(F) + Ey * (2 * ny + Ey), EG = Ey * CYL__LSQRT(f->A) + (ny + Ey) * 5 * u * nd;
     EA = 32 * u * f->ad;
     /* G with the crossing's sign (entry negative), any sign for a tangent contact */
@@ -1152,7 +1152,7 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        scalars, none of its terms can overflow. t_err: F = |y|² − r²|a|² and G = y·s at t, with bounds EF, EG
        on their rounding (standard model, Higham, "Accuracy and Stability of Numerical Algorithms", ch. 3;
        componentwise sums bounded by 2-norms, e.g. |δ(a × w)|₁ <= 3u·√6|a||w|): y errs by at most Ey =
-       13u(|a||w| + |t||a||d| + |y|) (|s| <= |a||d|), which leaves room for the roundings of |y|², r²|a|² and
+       8u(|a||w| + |y|) + 10u|t||a||d| (|s| <= |a||d|), which leaves room for the roundings of |y|², r²|a|² and
        y·s: EF = Ey(2|y| + Ey), EG = |s|Ey + 5u|a||d|(|y| + Ey), s erring by 5u|a||d|. f(t + δ) = f + 2gδ +
        Aδ² exactly: where g has the crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F|
        + EF)/(|G| − EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap: the plane's
