@@ -752,7 +752,7 @@ CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *
     CYL__P(lin)(1, f->m, x->t, f->s, y);
     yy = CYL__P(dot)(y, y), ny = CYL__LSQRT(yy), F = yy - f->r2aa, G = CYL__P(dot)(y, f->s);
     /* y's error, widened to cover |y|²'s, r²|a|²'s and y·s's roundings too; s's is u|a||d|'s
-       (steep rays: |s| itself scales the rest); |F|'s own is folded into EA and the factor (N5) */
+       (steep rays: |s| itself scales the rest); |F|'s own rounding: in EA and the factor (N5) */
     Ey = 8 * u * (CYL__LSQRT(f->aww) + ny) + CYL__P(abs)(x->t) * (10 * u * nd);
     Fb = CYL__P(abs)(F) + Ey * (2 * ny + Ey), EG = Ey * CYL__LSQRT(f->A) + (ny + Ey) * 5 * u * nd;
     EA = 32 * u * f->ad;
@@ -1153,11 +1153,13 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        on their rounding (standard model, Higham, "Accuracy and Stability of Numerical Algorithms", ch. 3;
        componentwise sums bounded by 2-norms, e.g. |δ(a × w)|₁ <= 3u·√6|a||w|): y errs by at most Ey =
        8u(|a||w| + |y|) + 10u|t||a||d| (|s| <= |a||d|), which leaves room for the roundings of |y|², r²|a|² and
-       y·s: EF = Ey(2|y| + Ey), EG = |s|Ey + 5u|a||d|(|y| + Ey), s erring by 5u|a||d|. f(t + δ) = f + 2gδ +
-       Aδ² exactly: where g has the crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root is within (|F|
-       + EF)/(|G| − EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap: the plane's
-       residual over |ζ| less its bound. The float API computed in double adds t's rounding; its wall root's
-       bound is N9's where first order and below 2^-7 of float's ulp.
+       y·s: EF = Ey(2|y| + Ey), EG = |s|Ey + 5u|a||d|(|y| + Ey), s erring by 5u|a||d|; A's error and F's own
+       rounding (up to 12u|F|, with the bound's) take A⁺ = A + 32u|a|²|d|² and a last factor 1 + 48u. f(t +
+       δ) = f + 2gδ + Aδ² exactly: where g has the crossing's sign and (|G| − EG)² >= A⁺(|F| + EF), the root
+       is within (|F| + EF)/(|G| − EG); else, the roots' product being f/A, within (2|g| + √(A|f|))/A. A cap:
+       the plane's residual over |ζ| less its bound (|g|'s own rounding in its last factor). The float API
+       computed in double adds t's rounding; its wall root's bound is N9's where first order and below 2^-7
+       of float's ulp.
    N6. The plain tier's limits, from rounding what each decision compares: e = D/(r²A) carries a few u·(1 + |o
        − c|/r)(1 + 2ρ/r) (ρ: the line's distance from the axis): the tangent band's edges blur by that for far
        origins; a rim, u·(|o − c| + |t d| + h)/h of the half height (a flat disk seen along its axis from an
