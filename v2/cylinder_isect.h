@@ -606,10 +606,10 @@ CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 #endif
 
 /* ------------------------------------------------------------------ frame */
-/* Everything the decisions use, from the cross products s = a × d and m = a × w (N1), and the
-   range test (N2) on derived values: r|a|, r²|a|², |a|²|d|², Ha and (hot path) r²A and the steep
-   margin at least lo; |a|²(|w|² + r²), |a|²|d|² and r²A (>= D) summed at most hi; Ha finite
-   unless h is. Every NaN, infinity, zero or negative of o, d, c, a, r, h fails it. */
+/* Everything the decisions use, from s = a × d and m = a × w (N1), and the range test (N2) on
+   derived values: r|a|, r²|a|², |a|²|d|², Ha and (hot path) r²A and the steep margin at least lo;
+   |a|²(|w|² + r²), |a|²|d|² and r²A (>= D) summed at most hi; Ha finite unless h is (always so
+   where L is wider than R). Every NaN, infinity, zero or negative of o, d, c, a, r, h fails it. */
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
     CYL__L ml[3], lo;
@@ -645,7 +645,8 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
        products exact, those whose s or m loses 8 bits (N6): d or o − c within 2^-8 of the axis */
     if (!f->cold) lo = CYL__P(min)(CYL__P(min)(sizeof(CYL__L) > sizeof(CYL__R) ? CYL__P(parallel)(f) :
         CYL__P(min)(65536 * f->A - f->ad, 65536 * f->mm - f->aww), f->r2 * f->A), lo);
-    return lo >= f->lo && f->aww + f->r2aa + f->ad + f->r2 * f->A <= CYL__HOT_HI && !(f->Ha - f->H > CYL__LMAX);
+    return lo >= f->lo && f->aww + f->r2aa + f->ad + f->r2 * f->A <= CYL__HOT_HI &&
+           (sizeof(CYL__L) > sizeof(CYL__R) || !(f->Ha - f->H > CYL__LMAX)); /* a wider L: Ha < 2^256 */
 }
 
 /* ------------------------------------------------------------------ decisions */
