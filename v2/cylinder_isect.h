@@ -819,7 +819,7 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsig
         CYL__OPAQUE(tr);
         if (!(opts & CYL_NO_ERRBOUND)) /* t's rounding to R joins the bound, rounded up in R */
             er = (CYL__R)(err + CYL__P(abs)((CYL__L)tr - t)), /* (beyond R's range: inf) */
-            er = er * (1 + (CYL__R)2.384185791015625e-07) + (CYL__R)1.40129846432481707e-45;
+            er = er * (1 + 2 * (CYL__R)CYL__IFR(DBL_EPSILON, FLT_EPSILON)) + (CYL__R)1.40129846432481707e-45;
         if (CYL__P(abs)((CYL__L)vr) > f->vlim) vr = CYL__P(toward0)(vr);
     }
     hit->t = tr, hit->t_err = er, hit->v = vr;
