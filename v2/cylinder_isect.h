@@ -755,7 +755,7 @@ CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *
     /* y's error, widened to cover |y|²'s, r²|a|²'s and y·s's roundings too; s's is u|a||d|'s
        (steep rays: |s| itself scales the rest); |F|'s own rounding: in EA and the factor (N5) */
     Ey = 8 * u * (CYL__LSQRT(f->aww) + ny) + CYL__P(abs)(x->t) * (10 * u * nd);
-    Fb = CYL__P(abs)(F) + Ey * (2 * ny + Ey), EG = Ey * CYL__LSQRT(f->A) + (ny + Ey) * 5 * u * nd;
+    Fb = CYL__P(abs)(F) + Ey * (2 * ny + Ey), EG = Ey * CYL__LSQRT(f->A) + (ny + Ey) * (5 * u) * nd;
     EA = 32 * u * f->ad;
     /* G with the crossing's sign (entry negative), any sign for a tangent contact */
     Gb = (x->flags & CYL_F_TANGENT ? CYL__P(abs)(G) : x->flags & CYL_F_INSIDE ? G : -G) - EG;
@@ -786,10 +786,10 @@ CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, uns
     }
     if (f->cold && (q = CYL__P(max)(CYL__P(abs)(P), CYL__P(abs)(h) / f->sqaa)) > 0)
         P /= q, h /= q; /* the exact path's P² can leave the range (the hot path's cannot, N2) */
-    q = P * P + h * h / f->aa; /* |P|a|²s ∓ h(a × s)| = |a|²|s|√q (N5) */
-    if (!(q > 0)) h = x->flags & CYL_F_INSIDE ? f->aa : -f->aa, q = f->aa; /* P = D = 0 (N6) */
+    q = P * P + h * h / f->aa; /* |P|a|²s ∓ h(a × s)| = |a|²√(Aq) (N5) */
+    if (f->cold && !(q > 0)) h = x->flags & CYL_F_INSIDE ? f->aa : -f->aa, q = f->aa; /* P = D = 0 (hot: q >= r²A) */
     CYL__P(cross3)(f->a, f->s, as);
-    q = 1 / (CYL__LSQRT(f->A) * CYL__LSQRT(q));
+    q = 1 / CYL__LSQRT(f->A * q);
     CYL__P(lin)(P * q, f->s, -h / f->aa * q, as, n);
     CYL__P(mul3)(g, n, n); /* turned last: the two normals negate bit for bit */
 }
