@@ -746,7 +746,7 @@ CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *
     CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb, nd;
     if (sizeof(CYL__L) > sizeof(CYL__R) && !f->cold) {
         Gb = CYL__P(root_bound)(f, x->t, h); /* first order, and 2^-7 of R's ulp of t */
-        if (CYL__P(first_order)(f, Gb, h) && Gb <= CYL__P(abs)(x->t) * (CYL__L)CYL__IFR(DBL_EPSILON, FLT_EPSILON) / 128)
+        if (CYL__P(first_order)(f, Gb, h) && Gb <= CYL__P(abs)(x->t) * ((CYL__L)CYL__IFR(DBL_EPSILON, FLT_EPSILON) / 128))
             return Gb;
     }
     nd = CYL__LSQRT(f->ad); /* >= |s|: ad is A plus a square */
