@@ -786,8 +786,8 @@ CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, uns
     }
     if (f->cold && (q = CYL__P(max)(CYL__P(abs)(P), CYL__P(abs)(h) / f->sqaa)) > 0)
         P /= q, h /= q; /* the exact path's P² can leave the range (the hot path's cannot, N2) */
+    else if (f->cold) h = x->flags & CYL_F_INSIDE ? f->aa : -f->aa; /* P = D = 0 (hot: q >= r²A) */
     q = P * P + h * h / f->aa; /* |P|a|²s ∓ h(a × s)| = |a|²√(Aq) (N5) */
-    if (f->cold && !(q > 0)) h = x->flags & CYL_F_INSIDE ? f->aa : -f->aa, q = f->aa; /* P = D = 0 (hot: q >= r²A) */
     CYL__P(cross3)(f->a, f->s, as);
     q = 1 / CYL__LSQRT(f->A * q);
     CYL__P(lin)(P * q, f->s, -h / f->aa * q, as, n);
