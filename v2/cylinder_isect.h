@@ -77,8 +77,8 @@
                        N8's compensated Newton step; `make cost` gives the price
      CYL_NO_NORMAL     skip the normal: hit.n = {0, 0, 0}
      CYL_NO_ERRBOUND   skip the bound: hit.t_err = +INFINITY
-     CYL_TRUSTED       accepted, changes nothing: the hot path validates nothing (one range
-                       test on derived values sends invalid input to the exact path, N2)
+     CYL_TRUSTED       skip input validation (NULL and option checks remain): the caller
+                       guarantees finite inputs, nonzero d and a, r > 0, h > 0, tmin <= tmax
    Pass options as constants: the entry points are forced inline (CYL_DEF), so the code of an
    option not given folds away at each call site.
 
@@ -1075,14 +1075,14 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     f->lo = CYL__COLD_LO, f->cold = f->exact = 1;
 }
 
-/* The exact path: validates, scales, answers on the same decisions; ratios out of range even
-   scaled (r below 2^-300 |o − c|, double) are answered with r raised to it and t_err = inf.
-   fs: the caller's frame to reuse (CYL__SCRATCH), else 0. */
+/* The exact path: validates (but what CYL_TRUSTED vouches for), scales, answers on the same
+   decisions; ratios out of range even scaled (r below 2^-300 |o − c|, double) are answered with
+   r raised to it and t_err = inf. fs: the caller's frame to reuse (CYL__SCRATCH), else 0. */
 CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                            int want, CYL__N(hit) *hits, CYL__P(frame) *fs)
 {
     CYL__P(frame) own, *f = fs ? fs : &own;
-    int rc = CYL__P(validate)(ray, cyl, opts);
+    int rc = (opts & CYL_TRUSTED) && !(opts & ~CYL__SUPPORTED) ? 0 : CYL__P(validate)(ray, cyl, opts);
     if (rc) return rc;
     CYL__P(load_scaled)(f, ray, cyl);
     while (!CYL__P(derive)(f)) { /* one call: it is inlined once */
