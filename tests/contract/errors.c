@@ -235,6 +235,39 @@ static void test_inputs_unmodified_and_miss_untouched(void)
     }
 }
 
+/* CYL_TRUSTED with inputs that break its promise (one of the 16 inputs NaN, infinite, zero or
+ * negative): validation is skipped, so no CYL_E_* code comes back, yet every call returns, writes
+ * nothing it does not own, leaves *hit alone on a miss and hits[i >= count] always; under the
+ * sanitizer builds of make test, without undefined behaviour. The answer itself is unspecified. */
+static void test_trusted_broken_promise(void)
+{
+    const T bad[5] = {T_NAN, T_INF, -T_INF, 0, -1};
+    const unsigned opts[2] = {CYL_TRUSTED, CYL_TRUSTED | CYL_CAPS | CYL_NO_TANGENT};
+    int slot, b, k;
+    for (slot = 0; slot < 16; slot++)
+        for (b = 0; b < 5; b++)
+            for (k = 0; k < 2; k++) {
+                Ray ray = mk_ray(-3, L(0.25), L(0.125), 1, 0, 0), ray0;
+                Cyl cyl = z_cyl(2), cyl0;
+                Hit h, h0, hs[2], hs0[2];
+                T *in[16] = {&ray.o[0], &ray.o[1], &ray.o[2], &ray.d[0], &ray.d[1], &ray.d[2], &ray.tmin,
+                             &ray.tmax, &cyl.c[0], &cyl.c[1], &cyl.c[2], &cyl.a[0], &cyl.a[1], &cyl.a[2], &cyl.r, &cyl.h};
+                int rc, n, oc;
+                char m[120];
+                *in[slot] = bad[b];
+                ray0 = ray, cyl0 = cyl;
+                sentinel(&h, 1); sentinel(&h0, 1); sentinel(hs, 2); sentinel(hs0, 2);
+                rc = CYL(intersect)(&ray, &cyl, opts[k], &h);
+                n = CYL(intersect_all)(&ray, &cyl, opts[k], hs);
+                oc = CYL(occluded)(&ray, &cyl, opts[k]);
+                snprintf(m, sizeof m, "input %d = %Lg, opts 0x%x: no validation code", slot, (long double)bad[b], opts[k]);
+                CHECK((rc == 0 || rc == 1) && n >= 0 && n <= 2 && (oc == 0 || oc == 1), m);
+                CHECK(memcmp(&ray, &ray0, sizeof ray) == 0 && memcmp(&cyl, &cyl0, sizeof cyl) == 0, m);
+                CHECK(rc != 0 || memcmp(&h, &h0, sizeof h) == 0, m);
+                CHECK(n == 2 || memcmp(&hs[n], &hs0[n], (size_t)(2 - n) * sizeof hs[0]) == 0, m);
+            }
+}
+
 /* A degenerate segment (p0 == p1) gives a = 0 and h = 0; the documented check order puts
  * CYL_E_ZERO_AXIS before CYL_E_HEIGHT, so that is the error intersect must report. */
 static void test_from_segment_degenerate(void)
@@ -258,6 +291,7 @@ static void run_errors(void)
     RUN_TEST(test_error_trange_option);
     RUN_TEST(test_error_check_order);
     RUN_TEST(test_inputs_unmodified_and_miss_untouched);
+    RUN_TEST(test_trusted_broken_promise);
     RUN_TEST(test_from_segment_degenerate);
 }
 
