@@ -89,7 +89,7 @@
      CYL_NO_PRECISE        undefined; defined with      compile out CYL_PRECISE (the bit then
                            CYL_NO_DOUBLE                returns CYL_E_OPTION)
      CYL_DEF               static inline (forced, gcc   qualifier of every public function;
-                           and clang unless -Os)        `static inline` lets calls share code
+                           and clang but at -O0, -Os)   `static inline` lets calls share code
      CYL_SQRTF, CYL_SQRT   the instruction (x86-64,     square roots
                            AArch64), sqrt[f] otherwise
      CYL_FMAF, CYL_FMA     __builtin_fma[f] or fma[f]   the exact path's fused multiply-add
@@ -146,9 +146,9 @@
 #error "cylinder_isect.h: needs FLT_EVAL_METHOD == 0 (no excess precision, e.g. x87); use SSE2, or -fexcess-precision=fast"
 #endif
 
-/* Forced inline where the compiler allows it, so that constant options fold at every call
-   site (gcc keeps an entry point called from several places out of line otherwise). */
-#if (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE_SIZE__)
+/* Forced inline when optimizing for speed, so that constant options fold at every call site
+   (gcc keeps an entry point called from several places out of line otherwise; -O0 folds nothing). */
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
 #define CYL__INL static inline __attribute__((always_inline))
 #define CYL__SCRATCH(f) 0
 #else /* the frame is in memory: the exact path reuses it (its stack, not another) */
