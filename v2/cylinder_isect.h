@@ -777,10 +777,10 @@ CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x
 /* The unit normal (N5). The wall's outward one is y × a at the crossing, which from the roots
    is P|a|²·s ∓ √(|a|²D)·(a × s) (entry −, exit +): no cancellation for far origins; its length
    follows from P and h alone. A cap's is ±a. The ray-facing one turns at an exit (CYL_F_INSIDE). */
-CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts, CYL__L n[3])
+CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts, int side, CYL__L n[3])
 {
     CYL__L as[3], g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 : 1, h = x->h, P = f->P, q;
-    if (x->part != CYL_SIDE) {
+    if (!side) {
         CYL__P(mul3)(x->part == CYL_CAP_HIGH ? g / f->sqaa : -g / f->sqaa, f->a, n);
         return;
     }
@@ -804,10 +804,10 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsig
 {
     CYL__L n[3] = {0, 0, 0}, t = x->t, err = CYL__LINF, v;
     CYL__R tr, vr, er;
-    v = x->part == CYL_SIDE ? CYL__P(axial_v)(f, t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
-    if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, x, opts, n);
-    if (!(opts & CYL_NO_ERRBOUND))
-        err = x->part == CYL_SIDE ? CYL__P(bound_wall)(f, x) : CYL__P(bound_cap)(f, x);
+    const int side = !(opts & CYL_CAPS) || x->part == CYL_SIDE; /* the open tube emits walls alone */
+    v = side ? CYL__P(axial_v)(f, t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
+    if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, x, opts, side, n);
+    if (!(opts & CYL_NO_ERRBOUND)) err = side ? CYL__P(bound_wall)(f, x) : CYL__P(bound_cap)(f, x);
     if (f->cold) {
         CYL__L t0 = CYL__LT(scale)(t, f->et);
         t = CYL__P(max)(f->rmin, CYL__P(min)(t0, f->rmax));
