@@ -1140,9 +1140,9 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
    N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², r²A (else D can be
        subnormal), Ha and |a|²(|w|² + r²) against one range, [2^-300, 2^450] in double: the largest products
        the bounds form, such as |a|²D <= r²|a|²·|a|²|d|², stay below 2^900. Every NaN, infinity, zero or
-       out-of-range input fails it and goes to the exact path, which validates in the documented order and
-       scales lengths, d and a by powers of two (exact: its answers to a scene scaled by 2^k are the same bits
-       scaled; the hot path's, without N8's step, agree within t_err).
+       out-of-range input fails it and goes to the exact path, which validates in the documented order (unless
+       CYL_TRUSTED) and scales lengths, d and a by powers of two (exact: its answers to a scene scaled by 2^k
+       are the same bits scaled; the hot path's, without N8's step, agree within t_err).
    N3. Geometric discriminant B² − AC = |a|²·D, D = r²A − P², P = w·s (Ray Tracing Gems, ch. 7; pbrt-v4
        cylinders): no difference of large squares for far origins.
    N4. Stable root pair q = −(B + sgn(B)√(|a|²D)), t = q/A and C/q (Numerical Recipes §5.6); caps by clipping
