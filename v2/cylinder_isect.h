@@ -1026,11 +1026,12 @@ CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l)
 }
 #endif /* CYL__XOWN */
 
-/* Validation in the documented order (the hot path sent what its range test refused). */
+/* Validation in the documented order of what the hot path refused; CYL_TRUSTED: the options alone. */
 static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
 {
     const CYL__R *v[4] = {ray->o, ray->d, cyl->c, cyl->a};
     int i, k, zero[4] = {1, 1, 1, 1};
+    if (opts & CYL_TRUSTED) return opts & ~CYL__SUPPORTED ? CYL_E_OPTION : 0;
     for (k = 0; k < 4; k++)
         for (i = 0; i < 3; i++) {
             if (!(v[k][i] >= -CYL__RMAX && v[k][i] <= CYL__RMAX)) return CYL_E_NONFINITE;
@@ -1040,8 +1041,7 @@ static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder
     if (!(cyl->r > 0) || !(cyl->r <= CYL__RMAX)) return CYL_E_RADIUS;
     if (!(cyl->h > 0)) return CYL_E_HEIGHT;
     if (!(ray->tmin <= ray->tmax)) return CYL_E_TRANGE;
-    if (opts & ~CYL__SUPPORTED) return CYL_E_OPTION;
-    return 0;
+    return opts & ~CYL__SUPPORTED ? CYL_E_OPTION : 0;
 }
 
 /* The frame of valid input scaled into the range (N2): lengths by 2^-kl, d by 2^-kd, a by
@@ -1075,14 +1075,14 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     f->lo = CYL__COLD_LO, f->cold = f->exact = 1;
 }
 
-/* The exact path: validates (but what CYL_TRUSTED vouches for), scales, answers on the same
-   decisions; ratios out of range even scaled (r below 2^-300 |o − c|, double) are answered with
-   r raised to it and t_err = inf. fs: the caller's frame to reuse (CYL__SCRATCH), else 0. */
+/* The exact path: validates, scales, answers on the same decisions; ratios out of range even
+   scaled (r below 2^-300 |o − c|, double) are answered with r raised to it and t_err = inf.
+   fs: the caller's frame to reuse (CYL__SCRATCH), else 0. */
 CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                            int want, CYL__N(hit) *hits, CYL__P(frame) *fs)
 {
     CYL__P(frame) own, *f = fs ? fs : &own;
-    int rc = (opts & CYL_TRUSTED) && !(opts & ~CYL__SUPPORTED) ? 0 : CYL__P(validate)(ray, cyl, opts);
+    int rc = CYL__P(validate)(ray, cyl, opts);
     if (rc) return rc;
     CYL__P(load_scaled)(f, ray, cyl);
     while (!CYL__P(derive)(f)) { /* one call: it is inlined once */
