@@ -987,8 +987,8 @@ CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__
     CYL__L v = t, dt, g, sa[2], ra[3], H, Hh, zh, zl;
     CYL__P(acc) F, Z;
     int it;
-    CYL__P(norm_a)(f, sa, ra);
     if (part != CYL_SIDE) { /* a·w + H|a| + tζ on the low plane, ζ = a·d summed first */
+        CYL__P(norm_a)(f, sa, ra);
         H = part == CYL_CAP_LOW ? f->H : -f->H, Hh = H * sa[0];
         CYL__P(axial)(f, &F, &Z);
         zh = CYL__P(acc_pair)(&Z, &zl);
@@ -998,7 +998,7 @@ CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__
         if (lo && CYL__P(abs)(v) <= CYL__LMAX) *lo = CYL__P(sum_err)(t, dt, v);
         return CYL__P(abs)(v) <= CYL__LMAX ? v : t; /* ζ = 0 (no ends): t stays */
     }
-    for (it = 0; it < 3; it++) {
+    for (CYL__P(norm_a)(f, sa, ra), it = 0; it < 3; it++) { /* the wall: ra alone */
         v -= dt = CYL__P(resid)(f, ra, v, &g) / (2 * g);
         if (!(dt * dt > gap * CYL__LU * CYL__P(abs)(v))) break;
     }
