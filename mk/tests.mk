@@ -104,6 +104,14 @@ $(eval $(call TESTS_CFG_RUNNER,dispatch,tests/config/cfg_dispatch_main.c tests/c
 # and the pairs (N1) as structs, as targets without x86-64's or AArch64's vectors form them,
 # giving the same bits as the vectors here.
 $(eval $(call TESTS_CFG_RUNNER,pair_struct,tests/config/cfg_dispatch_main.c tests/config/cfg_dispatch_other.c bench/cases.c,-Ibench -O2 -std=gnu99 -DCFG_PAIR_STRUCT,c))
+# and the other unit built by a C compiler without GNU C (tcc, which defines no __GNUC__): every
+# environment hook's portable branch, as MSVC and other compilers take it (<math.h>'s sqrt and
+# fma, <string.h>'s memcpy, struct pairs, Dekker's products, no dispatch, nothing forced inline),
+# giving the same bits as gcc's builtins. tcc's <float.h> lacks FLT_EVAL_METHOD (0: SSE2 here).
+$(TESTS_CFG_DIR)/portable_other.o: tests/config/cfg_dispatch_other.c $(TESTS_CFG_HDRS)
+	@mkdir -p $(@D)
+	tcc -std=c99 -Wall -Werror -DFLT_EVAL_METHOD=0 -I$(V2_ABS) -Itests/config -c $< -o $@
+$(eval $(call TESTS_CFG_RUNNER,portable,tests/config/cfg_dispatch_main.c bench/cases.c $(TESTS_CFG_DIR)/portable_other.o,-Ibench -O2 -std=gnu99 -DCFG_PORTABLE -z noexecstack,c))
 # Built for size (-Os, what a firmware uses; the last -O wins): the entry points are then not
 # forced inline, and the exact path reuses the caller's frame (CYL__SCRATCH). (v1's
 # test_float does not build at -Os with -Werror: gcc 12's -Wstringop-overflow in its order2.)

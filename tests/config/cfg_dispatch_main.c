@@ -5,7 +5,9 @@
  * answer every case family of bench/cases.c in both APIs, open and capped, with and without
  * CYL_OUTWARD and CYL_NO_TANGENT, through every entry point: the same return values and the
  * same bits in every hit. Built with CFG_PAIR_STRUCT, the other unit forms the hot path's pairs
- * (N1) as structs, lane by lane, where this one has vectors: the same bits again, every tier. */
+ * (N1) as structs, lane by lane, where this one has vectors: the same bits again, every tier.
+ * With CFG_PORTABLE the other unit comes from a compiler without GNU C (mk/tests.mk: tcc), so
+ * it takes every environment hook's portable branch: the same bits again, every tier. */
 #include "cfg_dispatch.h"
 #include "cases.h"
 
@@ -20,7 +22,7 @@ void tearDown(void) {}
 
 static const unsigned opts[] = {CYL_PRECISE, CYL_PRECISE | CYL_CAPS, CYL_PRECISE | CYL_CAPS | CYL_OUTWARD,
                                 CYL_PRECISE | CYL_NO_TANGENT
-#ifdef CFG_PAIR_STRUCT
+#if defined(CFG_PAIR_STRUCT) || defined(CFG_PORTABLE)
                                 , 0u, CYL_CAPS, CYL_CAPS | CYL_OUTWARD, CYL_NO_TANGENT,
                                 CYL_CAPS | CYL_NO_NORMAL | CYL_NO_ERRBOUND
 #endif
@@ -29,8 +31,8 @@ static const unsigned opts[] = {CYL_PRECISE, CYL_PRECISE | CYL_CAPS, CYL_PRECISE
 
 static void skip_without_dispatch(void)
 {
-#if defined(CFG_PAIR_STRUCT)
-    /* nothing to skip: the two units differ in their pairs' form */
+#if defined(CFG_PAIR_STRUCT) || defined(CFG_PORTABLE)
+    /* nothing to skip: the two units differ in their pairs' form, or their hooks' */
 #elif !CYL_FMA_DISPATCH
     TEST_IGNORE_MESSAGE("CYL_FMA_DISPATCH is 0 here (not x86-64, or built with the FMA)");
 #else
