@@ -10,6 +10,8 @@
  *      (well-conditioned hits, see ev_kappa).
  *   3. CYL_PRECISE: no misclassification with a margin above the band in every family
  *      (intersect, intersect_all and occluded); t within 2 ulps on every well-conditioned hit.
+ *      Also on rays built one by one where the plain decisions go wrong: t-range ends by
+ *      grazing crossings, the tangent band's edges (near and far origins), far rims.
  */
 #include "unity.h"
 #include "eval.h"
@@ -408,17 +410,23 @@ static double to_float(double x)
     return (double)f;
 }
 
-static void near_band_case(int prec, double rho, double th, double sd, double v0, unsigned opts,
-                           int *checked, int *inband, int *bad, size_t *len)
+/* The axis a and two directions across it, e1 and e2 (orthonormal with a/|a|: exactly for
+   z_axis, within rounding for oblique, which only moves where the rounded case lands). */
+typedef struct band_frame { double a[3], e1[3], e2[3]; } band_frame;
+static const band_frame z_axis = {{0, 0, 2}, {1, 0, 0}, {0, 1, 0}};
+
+/* The ray (o, dn) against the cylinder c = (0.25, -0.5, 0.125), a, r = 1, h = 3 by CYL_PRECISE's
+   intersect_all and the exact reference: a count, part or INSIDE flag differing where the margin
+   exceeds the band, a t outside its t_err, or more than INBAND_ULPS_MAX ulps off, is counted bad. */
+static void band_case(int prec, const double a[3], double o[3], double dn[3], unsigned opts,
+                      const char *what, int *checked, int *inband, int *bad, size_t *len)
 {
-    const double c[3] = {0.25, -0.5, 0.125}, a[3] = {0, 0, 2}, r = 1, h = 3;
-    double dn[3] = {0, sin(th), cos(th)}, o[3], band = ldexp(1.0, -(prec - 8)), t[2] = {0, 0};
-    double te[2] = {0, 0};
+    const double c[3] = {0.25, -0.5, 0.125}, r = 1, h = 3;
+    double band = ldexp(1.0, -(prec - 8)), t[2] = {0, 0}, te[2] = {0, 0};
     cyl_ref_case in;
     cyl_ref_result rr;
     int j, n, part[2] = {0, 0}, wrong = 0;
     unsigned fl[2] = {0u, 0u};
-    for (j = 0; j < 3; ++j) o[j] = c[j] + (j == 0 ? rho : 0) + (j == 2 ? v0 : 0) - sd * dn[j];
     if (prec == 24)
         for (j = 0; j < 3; ++j) { o[j] = to_float(o[j]); dn[j] = to_float(dn[j]); }
     memset(&in, 0, sizeof in);
@@ -459,10 +467,27 @@ static void near_band_case(int prec, double rho, double th, double sd, double v0
     (*bad)++;
     if (*len < sizeof msg - 200)
         *len += (size_t)snprintf(msg + *len, sizeof msg - *len,
-                                 "[rho 1%+.0e th %.2f sd %.1f v0 %.2f opts %u: count %d (exact %d), "
-                                 "t %.17g +- %.3g (exact %.17g, %.3g ulps)] ", rho - 1, th, sd, v0,
-                                 opts, n, rr.count, t[0], te[0], rr.hit[0].t[0],
+                                 "[%s opts %u: count %d (exact %d), t %.17g +- %.3g (exact %.17g, "
+                                 "%.3g ulps)] ", what, opts, n, rr.count, t[0], te[0], rr.hit[0].t[0],
                                  rr.count > 0 ? cyl_ref_ulps(&rr.hit[0], t[0], prec) : 0.0);
+}
+
+/* A ray whose closest approach to the axis is rho·e1 + v0·â from c, at angle th to the axis,
+   from sd before it. */
+static void near_band_case(int prec, const band_frame *fr, double rho, double th, double sd, double v0,
+                           unsigned opts, int *checked, int *inband, int *bad, size_t *len)
+{
+    const double c[3] = {0.25, -0.5, 0.125}, *a = fr->a;
+    const double na = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    double dn[3], o[3];
+    char what[80];
+    int j;
+    for (j = 0; j < 3; ++j) {
+        dn[j] = sin(th) * fr->e2[j] + cos(th) * a[j] / na;
+        o[j] = c[j] + rho * fr->e1[j] + v0 * a[j] / na - sd * dn[j];
+    }
+    snprintf(what, sizeof what, "rho 1%+.0e th %.2f sd %.3g v0 %.2f", rho - 1, th, sd, v0);
+    band_case(prec, a, o, dn, opts, what, checked, inband, bad, len);
 }
 
 static void check_precise_near_band(int prec)
@@ -478,8 +503,8 @@ static void check_precise_near_band(int prec)
                 for (si = 0; si < 3; ++si)
                     for (vi = 0; vi < 3; ++vi)
                         for (caps = 0; caps < 2; ++caps)
-                            near_band_case(prec, 1 + sg * pow(10.0, -k), ths[ti], sds[si], v0s[vi],
-                                           CYL_PRECISE | (caps ? CYL_CAPS : 0u), &checked,
+                            near_band_case(prec, &z_axis, 1 + sg * pow(10.0, -k), ths[ti], sds[si],
+                                           v0s[vi], CYL_PRECISE | (caps ? CYL_CAPS : 0u), &checked,
                                            &inband, &bad, &len);
     /* every k covered; in double k = 14, 15 (and in float 6 .. 8) lie inside the band */
     TEST_ASSERT_TRUE(inband >= checked / 8);
@@ -488,6 +513,92 @@ static void check_precise_near_band(int prec)
 
 static void test_precise_near_band_float(void) { check_precise_near_band(24); }
 static void test_precise_near_band_double(void) { check_precise_near_band(53); }
+
+/* The same around the band's edges from far origins (1e3 .. 1e7 r along the ray) and an oblique
+ * axis, where the plain e carries about u·|o − c|/r (N6): the hot path's s, m and P round, so
+ * its band decision can be off by far more than the band. The tier must doubt the band itself
+ * (band_doubt, N9): a crossing pair the plain D puts below the band returns as a miss before
+ * any root bound is formed. The default path gets the count of 178 of the 1008 double cases
+ * wrong beyond the band (as N6 allows it); with band_doubt short-circuited, so does this tier. */
+/* An oblique axis a = (0.5, -0.75, 1.25): e1 = â × x̂ normalized, e2 = â × e1. */
+static band_frame oblique_frame(void)
+{
+    band_frame fr = {{0.5, -0.75, 1.25}, {0, 0, 0}, {0, 0, 0}};
+    double na = sqrt(0.5 * 0.5 + 0.75 * 0.75 + 1.25 * 1.25), n1;
+    int j;
+    fr.e1[1] = fr.a[2] / na, fr.e1[2] = -fr.a[1] / na, n1 = sqrt(fr.e1[1] * fr.e1[1] + fr.e1[2] * fr.e1[2]);
+    fr.e1[1] /= n1, fr.e1[2] /= n1;
+    for (j = 0; j < 3; ++j) {
+        int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+        fr.e2[j] = (fr.a[j1] * fr.e1[j2] - fr.a[j2] * fr.e1[j1]) / na;
+    }
+    return fr;
+}
+
+static void check_precise_far_band(int prec)
+{
+    static const double ths[] = {0.3, 0.7, 1.1, 1.4}, sds[] = {1e3, 1e5, 1e7}, v0s[] = {-0.7, 0.2, 1.1};
+    const band_frame fr = oblique_frame();
+    int k, sg, ti, si, vi, caps, checked = 0, inband = 0, bad = 0;
+    size_t len = 0;
+    precise_or_skip();
+    msg[0] = 0;
+    for (k = prec == 24 ? 3 : 9; k <= (prec == 24 ? 8 : 15); ++k)
+        for (sg = -1; sg <= 1; sg += 2)
+            for (ti = 0; ti < 4; ++ti)
+                for (si = 0; si < 3; ++si)
+                    for (vi = 0; vi < 3; ++vi)
+                        for (caps = 0; caps < 2; ++caps)
+                            near_band_case(prec, &fr, 1 + sg * pow(10.0, -k), ths[ti], sds[si], v0s[vi],
+                                           CYL_PRECISE | (caps ? CYL_CAPS : 0u), &checked, &inband,
+                                           &bad, &len);
+    /* k from outside the band into it: 864 float, 1008 double cases, 30 and 38 of them in it */
+    TEST_ASSERT_TRUE(inband > 0 && inband < checked / 8);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, bad, msg);
+}
+static void test_precise_far_band_float(void) { check_precise_far_band(24); }
+static void test_precise_far_band_double(void) { check_precise_far_band(53); }
+
+/* CYL_PRECISE at the rim from far origins: rays from 1e3 .. 1e7 r away through the wall point at
+ * angle phi around the oblique axis and axial v = (h/2)(1 + σ·10^-k), just inside or outside
+ * the high rim, leaving the wall at angle be to its inward normal (toward +â for be > 0). The
+ * plain v = (z0 + tζ)/|a| carries about u·|o − c|/(h/2) relative (N6), far more than these
+ * margins; the tier must doubt the rim (its rim bounds, N9) and decide it exactly. The default
+ * path decides 134 of the 1152 double cases wrong beyond the band (as N6 allows it); with the
+ * rim certificates short-circuited, so does this tier. */
+static void check_precise_far_rim(int prec)
+{
+    static const double phis[] = {0.4, 2.1, 4.0}, bes[] = {-1.2, -0.6, 0.6, 1.2}, sds[] = {1e3, 1e5, 1e7};
+    const band_frame fr = oblique_frame();
+    const double c[3] = {0.25, -0.5, 0.125}, na = sqrt(0.5 * 0.5 + 0.75 * 0.75 + 1.25 * 1.25);
+    int j, k, sg, pi, bi, si, caps, checked = 0, inband = 0, bad = 0;
+    size_t len = 0;
+    precise_or_skip();
+    msg[0] = 0;
+    for (k = prec == 24 ? 3 : 6; k <= (prec == 24 ? 6 : 13); ++k)
+        for (sg = -1; sg <= 1; sg += 2)
+            for (pi = 0; pi < 3; ++pi)
+                for (bi = 0; bi < 4; ++bi)
+                    for (si = 0; si < 3; ++si)
+                        for (caps = 0; caps < 2; ++caps) {
+                            double n[3], p[3], dn[3], o[3], v = 1.5 * (1 + sg * pow(10.0, -k));
+                            char what[80];
+                            for (j = 0; j < 3; ++j) {
+                                n[j] = cos(phis[pi]) * fr.e1[j] + sin(phis[pi]) * fr.e2[j];
+                                p[j] = c[j] + n[j] + v * fr.a[j] / na;
+                                dn[j] = -cos(bes[bi]) * n[j] + sin(bes[bi]) * fr.a[j] / na;
+                                o[j] = p[j] - sds[si] * dn[j];
+                            }
+                            snprintf(what, sizeof what, "rim v 1%+.0e phi %.1f be %.1f sd %.3g",
+                                     sg * pow(10.0, -k), phis[pi], bes[bi], sds[si]);
+                            band_case(prec, fr.a, o, dn, CYL_PRECISE | (caps ? CYL_CAPS : 0u), what, &checked,
+                                      &inband, &bad, &len);
+                        }
+    TEST_ASSERT_TRUE(checked == (prec == 24 ? 576 : 1152)); /* every k: 4 float, 8 double */
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, bad, msg);
+}
+static void test_precise_far_rim_float(void) { check_precise_far_rim(24); }
+static void test_precise_far_rim_double(void) { check_precise_far_rim(53); }
 
 int main(void)
 {
@@ -505,5 +616,9 @@ int main(void)
     RUN_TEST(test_precise_trange_grazing_double);
     RUN_TEST(test_precise_near_band_float);
     RUN_TEST(test_precise_near_band_double);
+    RUN_TEST(test_precise_far_band_float);
+    RUN_TEST(test_precise_far_band_double);
+    RUN_TEST(test_precise_far_rim_float);
+    RUN_TEST(test_precise_far_rim_double);
     return UNITY_END();
 }
