@@ -454,6 +454,9 @@ static void band_case(int prec, const double a[3], double o[3], double dn[3], un
     (*checked)++;
     if (fabs(rr.e) <= (prec == 24 ? (double)CYL_TANGENT_TOLF : (double)CYL_TANGENT_TOL)) (*inband)++;
     if (n != rr.count) wrong = rr.margin > band;
+    if (n == 2 && !(t[0] <= t[1])) wrong = 1; /* sorted by t */
+    for (j = 0; j < n; ++j) /* a cap crossing is no grazing wall contact */
+        if (part[j] != CYL_SIDE && (fl[j] & CYL_F_TANGENT) != 0u) wrong = 1;
     for (j = 0; !wrong && j < n && j < rr.count; ++j) {
         const cyl_ref_hit *x = &rr.hit[j];
         if (part[j] != x->part || ((fl[j] ^ x->flags) & CYL_F_INSIDE) != 0u) {
@@ -492,7 +495,7 @@ static void near_band_case(int prec, const band_frame *fr, double rho, double th
 
 static void check_precise_near_band(int prec)
 {
-    static const double ths[] = {0.3, 0.7, 1.1, 1.4}, sds[] = {3, 5.5, 8}, v0s[] = {-0.7, 0.2, 1.1};
+    static const double ths[] = {0.3, 0.7, 1.1, 1.4}, sds[] = {3, 5.5, 8}, v0s[] = {-0.7, 0.2, 1.1, 1.5};
     int k, sg, ti, si, vi, caps, checked = 0, inband = 0, bad = 0;
     size_t len = 0;
     precise_or_skip();
@@ -501,7 +504,7 @@ static void check_precise_near_band(int prec)
         for (sg = -1; sg <= 1; sg += 2)
             for (ti = 0; ti < 4; ++ti)
                 for (si = 0; si < 3; ++si)
-                    for (vi = 0; vi < 3; ++vi)
+                    for (vi = 0; vi < 4; ++vi) /* the last: at the high rim */
                         for (caps = 0; caps < 2; ++caps)
                             near_band_case(prec, &z_axis, 1 + sg * pow(10.0, -k), ths[ti], sds[si],
                                            v0s[vi], CYL_PRECISE | (caps ? CYL_CAPS : 0u), &checked,

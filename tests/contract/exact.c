@@ -120,6 +120,32 @@ static void test_exact_caps_follow_axis_direction(void)
     EQ_INT(0, CYL(intersect_all)(&ray, &cyl, 0, hs), "open tube: no hit for a parallel ray");
 }
 
+/* An oblique ray through both caps from off the axis (neither parallel nor near the axis line:
+   the hot path's slab ends, not the exact path's): t = (∓h/2 − a·(o − c))/(a·d) is exact
+   here, in both axis directions. */
+static void test_exact_oblique_through_both_caps(void)
+{
+    Ray ray = mk_ray(0.25, 0, -5, 0.0625, 0, 1);
+    Cyl cyl = z_cyl(2);
+    Hit hs[2];
+    sentinel(hs, 2);
+    EQ_INT(2, CYL(intersect_all)(&ray, &cyl, CYL_CAPS, hs), "two cap hits");
+    HIT_EXACT(&hs[0], 4, CYL_CAP_LOW, 0u, "entry through the low cap at x = 0.5");
+    EXACT(-1, hs[0].v, "entry v = -h/2");
+    VEC_EXACT(hs[0].n, 0, 0, -1, "entry n");
+    HIT_EXACT(&hs[1], 6, CYL_CAP_HIGH, CYL_F_INSIDE, "exit through the high cap at x = 0.625");
+    EXACT(1, hs[1].v, "exit v = +h/2");
+    VEC_EXACT(hs[1].n, 0, 0, -1, "exit n faces the ray origin");
+
+    cyl.a[2] = -4; /* the axis down: the same planes, their parts swapped */
+    sentinel(hs, 2);
+    EQ_INT(2, CYL(intersect_all)(&ray, &cyl, CYL_CAPS | CYL_OUTWARD, hs), "axis down");
+    HIT_EXACT(&hs[0], 4, CYL_CAP_HIGH, 0u, "entry through CAP_HIGH");
+    VEC_EXACT(hs[0].n, 0, 0, -1, "CAP_HIGH outward = +a_hat");
+    HIT_EXACT(&hs[1], 6, CYL_CAP_LOW, CYL_F_INSIDE, "exit through CAP_LOW");
+    VEC_EXACT(hs[1].n, 0, 0, 1, "CAP_LOW outward = -a_hat");
+}
+
 /* A ray starting on the wall: t = 0 is in [tmin, tmax] = [0, inf] and is reported (inclusive). */
 static void test_exact_origin_on_surface(void)
 {
@@ -289,6 +315,7 @@ static void run_exact(void)
     RUN_TEST(test_exact_pythagorean_offset);
     RUN_TEST(test_exact_nonunit_d_and_a);
     RUN_TEST(test_exact_caps_follow_axis_direction);
+    RUN_TEST(test_exact_oblique_through_both_caps);
     RUN_TEST(test_exact_origin_on_surface);
     RUN_TEST(test_open_versus_capped);
     RUN_TEST(test_origin_inside);
