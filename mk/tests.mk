@@ -138,4 +138,4 @@ TEST_PREREQS += $(TESTS_CFG_DIR)/fast_math.stamp
 # Mutation check (not part of make test: it rebuilds the suite once per deliberate header bug).
 .PHONY: tests-mutants
 tests-mutants: unity $(BUILD)/gcc-O2/unity.o
-	@$(PYTHON) tests/mutants.py $(BUILD)
+	@$(PYTHON) tests/mutants.py --header $(HDR) $(BUILD)
