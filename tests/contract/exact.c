@@ -247,6 +247,51 @@ static void test_infinite_height(void)
     EQ_INT(0, CYL(occluded)(&ray, &cyl, CYL_CAPS), "the same ray misses a finite cylinder");
 }
 
+/* ================================================================== extreme inputs */
+/* o − c beyond the largest finite value, o and c finite and of opposite signs: the answer is
+   still exact (t = (2X ∓ r)/4 with X = 1.5·2^(max_exp−1), r = 2^(max_exp−3), h = 4r). */
+static void test_extreme_o_minus_c_overflows(void)
+{
+    const T X = T_LDEXP(L(1.5), T_MAX_EXP - 1), R = T_LDEXP(L(1), T_MAX_EXP - 3);
+    Ray ray = mk_ray(X, 0, 0, -4, 0, 0);
+    Cyl cyl = mk_cyl(-X, 0, 0, 0, 0, 1, R, 4 * R);
+    Hit hs[2];
+    sentinel(hs, 2);
+    EQ_INT(2, CYL(intersect_all)(&ray, &cyl, CYL_CAPS, hs), "two wall hits");
+    HIT_EXACT(&hs[0], T_LDEXP(L(11), T_MAX_EXP - 5), CYL_SIDE, 0u, "entry at x = r - X");
+    HIT_EXACT(&hs[1], T_LDEXP(L(13), T_MAX_EXP - 5), CYL_SIDE, CYL_F_INSIDE, "exit at x = -r - X");
+    VEC_EXACT(hs[0].n, 1, 0, 0, "entry n");
+    EXACT(0, hs[1].v, "exit v");
+    CHECK(hs[0].t_err >= 0 && hs[0].t_err < hs[0].t, "t_err finite and useful");
+}
+
+/* A cylinder thinner than the range resolves (r = 2^-(2·T_BIG_EXP) |o − c|; the exact path
+   answers those with r raised to its range and t_err = +inf): a ray through its axis hits it. */
+static void test_extreme_thin_cylinder(void)
+{
+    Ray ray = mk_ray(-1, 0, 0, 1, 0, 0);
+    Cyl cyl = mk_cyl(0, 0, 0, 0, 0, 1, T_LDEXP(L(1), -2 * T_BIG_EXP), 2);
+    Hit hs[2];
+    sentinel(hs, 2);
+    EQ_INT(2, CYL(intersect_all)(&ray, &cyl, 0, hs), "two wall hits");
+    HIT_NEAR(&hs[0], 1, CYL_SIDE, 0u, "entry at 1 - r");
+    HIT_NEAR(&hs[1], 1, CYL_SIDE, CYL_F_INSIDE, "exit at 1 + r");
+    CHECK(hs[0].t_err >= T_FABS(hs[0].t - 1) - T_EPS, "t_err holds (+inf where r was raised)");
+}
+
+/* h the smallest subnormal times 3, so h/2 is no value of T: a wall hit on the rim (v = h/2
+   exactly) reports v rounded into [−h/2, h/2], not past it. */
+static void test_extreme_subnormal_height(void)
+{
+    const T tiny = T_LDEXP(L(1), sizeof(T) == sizeof(float) ? -149 : -1074);
+    Ray ray = mk_ray(-2, 0, 0, 2, 0, 3 * tiny);
+    Cyl cyl = z_cyl(3 * tiny);
+    Hit h;
+    EQ_INT(CYL_HIT, CYL(intersect)(&ray, &cyl, 0, &h), "the wall at the rim");
+    HIT_EXACT(&h, L(0.5), CYL_SIDE, 0u, "rim point");
+    CHECK(fabsl((long double)h.v) <= 1.5L * (long double)tiny, "|v| <= h/2");
+}
+
 /* ================================================================== from_segment */
 static void test_from_segment(void)
 {
@@ -320,6 +365,9 @@ static void run_exact(void)
     RUN_TEST(test_open_versus_capped);
     RUN_TEST(test_origin_inside);
     RUN_TEST(test_infinite_height);
+    RUN_TEST(test_extreme_o_minus_c_overflows);
+    RUN_TEST(test_extreme_thin_cylinder);
+    RUN_TEST(test_extreme_subnormal_height);
     RUN_TEST(test_from_segment);
 }
 
