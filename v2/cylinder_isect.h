@@ -1076,7 +1076,7 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
 }
 
 /* The exact path: validates, scales, answers on the same decisions; ratios out of range even
-   scaled (r below 2^-300 |o − c|, double) are answered with r raised to it and t_err = inf.
+   scaled (double: r below 2^-300, h/2 below 2^-600 |o − c|) are answered raised, t_err = inf.
    fs: the caller's frame to reuse (CYL__SCRATCH), else 0. */
 CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                            int want, CYL__N(hit) *hits, CYL__P(frame) *fs)
