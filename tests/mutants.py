@@ -54,7 +54,10 @@ MUTANTS = [
 # be but 0 unless |o − c| > 2^26 r), the wall t_err /4 or
 # its y error /8 (the bound keeps that slack on every tested hit, the float API computed in
 # float included), the certified layer's first-order check dropped (near() then doubts the same
-# crossings through the unbounded bounds) or its constant 128 cut to 8.
+# crossings through the unbounded bounds) or its constant 128 cut to 8; on the exact path, t
+# kept in [tmin, tmax] after unscaling and t_err widened by that step (rounding is monotonic and
+# the bounds lie on the grid; 2^-1074 is added anyway), P taken from w·s only, the closest
+# approach's step, polish's guard against leaving the half gap, the normal's rescale.
 MUTANTS_V2 = [
  ("parallel band x8", "{ return f->A / ((CYL__L)CYL__PARA * (CYL__L)CYL__PARA) - f->ad; }",
   "{ return f->A / (64 * (CYL__L)CYL__PARA * (CYL__L)CYL__PARA) - f->ad; }"),
@@ -100,6 +103,22 @@ MUTANTS_V2 = [
  ("certified: rims never doubted", "x.doubt = e && (CYL__P(near)(v[k], ex, v[2], e[2]) || CYL__P(near)(v[k], ex, v[3], e[3]));", "x.doubt = 0;"),
  ("certified: t range never doubted", "if (e && x.ok) x.doubt |= CYL__P(near)(x.t, ex, f->tmin, 0)", "if (0) x.doubt |= CYL__P(near)(x.t, ex, f->tmin, 0)"),
  ("certified: no polish", "if (x.ok) x.t = CYL__X(polish)(f, x.t, x.part, sq / f->A, 0);", "if (0) x.t = CYL__X(polish)(f, x.t, x.part, sq / f->A, 0);"),
+ ("huge o - c not halved", "<= CYL__LMAX)) j = 1;",
+  "<= CYL__LMAX)) j = 0;"),
+ ("extreme ratio not raised", "f->r = CYL__P(max)(f->r, CYL__LSQRT(f->lo) * 2), f->H = CYL__P(max)(f->H, f->lo * 2), f->exact = 0;",
+  "f->exact = 0;"),
+ ("float v past h/2 after rounding", "if (CYL__P(abs)((CYL__L)vr) > f->vlim) vr = CYL__P(toward0)(vr);",
+  "(void)0;"),
+ ("segment height unscaled", "cy.h = CYL__P(scale)(CYL__RSQRT(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]), k);",
+  "cy.h = CYL__RSQRT(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);"),
+ ("NaN input taken as finite", "if (!(v[k][i] >= -CYL__RMAX && v[k][i] <= CYL__RMAX)) return CYL_E_NONFINITE;",
+  "if (v[k][i] < -CYL__RMAX || v[k][i] > CYL__RMAX) return CYL_E_NONFINITE;"),
+ ("hot range without its upper end", "return lo >= f->lo && f->aww + f->r2aa + f->ad + f->r2 * f->A <= CYL__HOT_HI &&",
+  "return lo >= f->lo &&"),
+ ("float t past FLT_MAX kept", "f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);",
+  "(void)0;"),
+ ("parallel: cap point outside the disk", "x.ok = x.ok && x.part != CYL_SIDE && CYL__P(dot)(y, y) <= f->r2aa;",
+  "x.ok = x.ok && x.part != CYL_SIDE;"),
 ]
 
 
