@@ -49,15 +49,18 @@ MUTANTS = [
 
 # The same for v2/cylinder_isect.h (chosen by the header's CYL_VERSION_MAJOR): one bug in each
 # decision function, the output, the bound, validation, and the certified layer and exact path.
-# Measured and left out, as no test input reaches where they differ: the wall roots unsorted
-# (rounding inverts them only for D below u²B²/|a|², which the hot path's D = r²A − P² cannot
-# be but 0 unless |o − c| > 2^26 r), the wall t_err /4 or
-# its y error /8 (the bound keeps that slack on every tested hit, the float API computed in
-# float included), the certified layer's first-order check dropped (near() then doubts the same
-# crossings through the unbounded bounds) or its constant 128 cut to 8; on the exact path, t
-# kept in [tmin, tmax] after unscaling and t_err widened by that step (rounding is monotonic and
-# the bounds lie on the grid; 2^-1074 is added anyway), P taken from w·s only, the closest
-# approach's step, polish's guard against leaving the half gap, the normal's rescale.
+# Measured and left out, as no test input reaches where they differ:
+# - the wall roots unsorted (rounding inverts them only for D below u²B²/|a|², which the hot
+#   path's D = r²A − P² cannot be but 0 unless |o − c| > 2^26 r);
+# - the wall t_err /4 or its y error /8 (the bound keeps that slack on every tested hit, the
+#   float API computed in float included); a contact without roots 4 ulps off −B/A (its t_err
+#   is formed at the t reported, and CYL_PRECISE takes contacts on the exact path);
+# - the certified layer's first-order check dropped (near() then doubts the same crossings
+#   through the unbounded bounds) or its constant 128 cut to 8;
+# - on the exact path: t kept in [tmin, tmax] after unscaling and t_err widened by that step
+#   (rounding is monotonic and the bounds lie on the grid; 2^-1074 is added anyway), P taken
+#   from w·s only, the closest approach's step, polish's guard against leaving the half gap,
+#   the normal's rescale, polished slab ends kept where they crossed.
 MUTANTS_V2 = [
  ("parallel band x8", "{ return f->A / ((CYL__L)CYL__PARA * (CYL__L)CYL__PARA) - f->ad; }",
   "{ return f->A / (64 * (CYL__L)CYL__PARA * (CYL__L)CYL__PARA) - f->ad; }"),
@@ -119,6 +122,18 @@ MUTANTS_V2 = [
   "(void)0;"),
  ("parallel: cap point outside the disk", "x.ok = x.ok && x.part != CYL_SIDE && CYL__P(dot)(y, y) <= f->r2aa;",
   "x.ok = x.ok && x.part != CYL_SIDE;"),
+ ("float t_err not rounded up", "er = er * (1 + 2 * (CYL__R)CYL__IFR(DBL_EPSILON, FLT_EPSILON)) + (CYL__R)1.40129846432481707e-45;",
+  "er = er;"),
+ ("cap t_err's residual bound /5", "CYL__L Eg = 5 * u * (CYL__LSQRT(f->aww)",
+  "CYL__L Eg = u * (CYL__LSQRT(f->aww)"),
+ ("exit clipped to a cap behind the entry", "(k ? CYL__P(before)(f, v, l, 3, 1) && !CYL__P(before)(f, v, l, 3, 0)",
+  "(k ? CYL__P(before)(f, v, l, 3, 1)"),
+ ("radius checked after height", "if (!(cyl->r > 0) || !(cyl->r <= CYL__RMAX)) return CYL_E_RADIUS;\n    if (!(cyl->h > 0)) return CYL_E_HEIGHT;",
+  "if (!(cyl->h > 0)) return CYL_E_HEIGHT;\n    if (!(cyl->r > 0) || !(cyl->r <= CYL__RMAX)) return CYL_E_RADIUS;"),
+ ("exact path: h not halved", "f->H = CYL__LT(scale)((CYL__L)cyl->h, -kl - 1);",
+  "f->H = CYL__LT(scale)((CYL__L)cyl->h, -kl);"),
+ ("exact path: rim without low parts", "? v[i] - v[j] < l[j] - l[i] : v[i] < v[j]; }",
+  "? v[i] < v[j] : v[i] < v[j]; }"),
 ]
 
 
