@@ -265,6 +265,23 @@ static void test_extreme_o_minus_c_overflows(void)
     CHECK(hs[0].t_err >= 0 && hs[0].t_err < hs[0].t, "t_err finite and useful");
 }
 
+/* t = δ and δ + 2r from an origin δ outside the wall of an infinite tube, 3·2^(max_exp−1) along
+   its axis from c (o − c overflows again): t and v come back from the exact path's scaling by
+   more than 2^max_exp; v saturates at the largest finite value. */
+static void test_extreme_unscaled_beyond_max_exp(void)
+{
+    const T X = T_LDEXP(L(1.5), T_MAX_EXP - 1), R = T_LDEXP(L(1), T_MAX_EXP - 4);
+    const T dl = T_LDEXP(L(1), T_MAX_EXP - 24);
+    Ray ray = mk_ray(-(R + dl), 0, X, 1, 0, 0);
+    Cyl cyl = mk_cyl(0, 0, -X, 0, 0, 1, R, T_INF);
+    Hit hs[2];
+    sentinel(hs, 2);
+    EQ_INT(2, CYL(intersect_all)(&ray, &cyl, 0, hs), "two wall hits");
+    HIT_EXACT(&hs[0], dl, CYL_SIDE, 0u, "entry");
+    HIT_EXACT(&hs[1], dl + 2 * R, CYL_SIDE, CYL_F_INSIDE, "exit");
+    EXACT(sizeof(T) == sizeof(float) ? (T)FLT_MAX : (T)DBL_MAX, hs[0].v, "v saturated");
+}
+
 /* A cylinder thinner than the range resolves (r = 2^-(2·T_BIG_EXP) |o − c|; the exact path
    answers those with r raised to its range and t_err = +inf): a ray through its axis hits it. */
 static void test_extreme_thin_cylinder(void)
@@ -367,6 +384,7 @@ static void run_exact(void)
     RUN_TEST(test_infinite_height);
     RUN_TEST(test_extreme_o_minus_c_overflows);
     RUN_TEST(test_extreme_thin_cylinder);
+    RUN_TEST(test_extreme_unscaled_beyond_max_exp);
     RUN_TEST(test_extreme_subnormal_height);
     RUN_TEST(test_from_segment);
 }
