@@ -60,7 +60,8 @@ MUTANTS = [
 # - on the exact path: t kept in [tmin, tmax] after unscaling and t_err widened by that step
 #   (rounding is monotonic and the bounds lie on the grid; 2^-1074 is added anyway), P taken
 #   from w·s only, the closest approach's step, polish's guard against leaving the half gap,
-#   the normal's rescale, polished slab ends kept where they crossed.
+#   the normal's rescale, polished slab ends kept where they crossed; expo one too high for a
+#   subnormal (the scale chosen is another power of two, and the answers do not depend on it).
 MUTANTS_V2 = [
  ("parallel band x8", "{ return f->A / ((CYL__L)CYL__PARA * (CYL__L)CYL__PARA) - f->ad; }",
   "{ return f->A / (64 * (CYL__L)CYL__PARA * (CYL__L)CYL__PARA) - f->ad; }"),
@@ -134,6 +135,22 @@ MUTANTS_V2 = [
   "f->H = CYL__LT(scale)((CYL__L)cyl->h, -kl);"),
  ("exact path: rim without low parts", "? v[i] - v[j] < l[j] - l[i] : v[i] < v[j]; }",
   "? v[i] < v[j] : v[i] < v[j]; }"),
+ ("float t range read swapped", "f.tmin = f.rmin = t[0], f.tmax = f.rmax = t[1]; }",
+  "f.tmin = f.rmin = t[1], f.tmax = f.rmax = t[0]; }"),
+ ("segment center at p0", "cy.c[i] = p0 && p1 ? p0[i] * (CYL__R)0.5 + p1[i] * (CYL__R)0.5 : 0;",
+  "cy.c[i] = p0 && p1 ? p0[i] : 0;"),
+ ("scale: large steps off", "for (; k > CYL__EBIAS; k -= CYL__EBIAS) x *= 2 / CYL__RMIN;",
+  "for (; k > CYL__EBIAS; k -= CYL__EBIAS) x *= 1 / CYL__RMIN;"),
+ ("-0 taken as nonzero", "if (v[k][i] < 0 || v[k][i] > 0) zero[k] = 0;",
+  "if (v[k][i] <= 0 || v[k][i] > 0) zero[k] = 0;"),
+ ("toward0 away from 0", "b -= 1u, CYL__B(memcpy)(&x, &b, sizeof x); return x; }",
+  "b += 1u, CYL__B(memcpy)(&x, &b, sizeof x); return x; }"),
+ ("occluded NULL cylinder accepted", "{ return !ray || !cyl ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 0, (CYL__N(hit) *)0); }",
+  "{ return !ray ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 0, (CYL__N(hit) *)0); }"),
+ ("no PARALLEL flag", "        x.flags |= CYL_F_PARALLEL;",
+  "        (void)0;"),
+ ("strerror off by one", "msg[code - CYL_E_OPTION];",
+  "msg[code - CYL_E_OPTION + 1];"),
 ]
 
 
