@@ -410,10 +410,12 @@ static double to_float(double x)
     return (double)f;
 }
 
-/* The axis a and two directions across it, e1 and e2 (orthonormal with a/|a|: exactly for
-   z_axis, within rounding for oblique, which only moves where the rounded case lands). */
-typedef struct band_frame { double a[3], e1[3], e2[3]; } band_frame;
-static const band_frame z_axis = {{0, 0, 2}, {1, 0, 0}, {0, 1, 0}};
+/* The axis a, its length na and two directions across it, e1 and e2 (orthonormal with a/na:
+   exactly for z_axis, within rounding for oblique, which only moves where the rounded case
+   lands); the cylinder's center, r = 1 and h = 3 are band_case's. */
+typedef struct band_frame { double a[3], na, e1[3], e2[3]; } band_frame;
+static const band_frame z_axis = {{0, 0, 2}, 2, {1, 0, 0}, {0, 1, 0}};
+static const double band_c[3] = {0.25, -0.5, 0.125};
 
 /* The ray (o, dn) against the cylinder c = (0.25, -0.5, 0.125), a, r = 1, h = 3 by CYL_PRECISE's
    intersect_all and the exact reference: a count, part or INSIDE flag differing where the margin
@@ -421,7 +423,7 @@ static const band_frame z_axis = {{0, 0, 2}, {1, 0, 0}, {0, 1, 0}};
 static void band_case(int prec, const double a[3], double o[3], double dn[3], unsigned opts,
                       const char *what, int *checked, int *inband, int *bad, size_t *len)
 {
-    const double c[3] = {0.25, -0.5, 0.125}, r = 1, h = 3;
+    const double *c = band_c, r = 1, h = 3;
     double band = ldexp(1.0, -(prec - 8)), t[2] = {0, 0}, te[2] = {0, 0};
     cyl_ref_case in;
     cyl_ref_result rr;
@@ -480,17 +482,15 @@ static void band_case(int prec, const double a[3], double o[3], double dn[3], un
 static void near_band_case(int prec, const band_frame *fr, double rho, double th, double sd, double v0,
                            unsigned opts, int *checked, int *inband, int *bad, size_t *len)
 {
-    const double c[3] = {0.25, -0.5, 0.125}, *a = fr->a;
-    const double na = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
     double dn[3], o[3];
     char what[80];
     int j;
     for (j = 0; j < 3; ++j) {
-        dn[j] = sin(th) * fr->e2[j] + cos(th) * a[j] / na;
-        o[j] = c[j] + rho * fr->e1[j] + v0 * a[j] / na - sd * dn[j];
+        dn[j] = sin(th) * fr->e2[j] + cos(th) * fr->a[j] / fr->na;
+        o[j] = band_c[j] + rho * fr->e1[j] + v0 * fr->a[j] / fr->na - sd * dn[j];
     }
     snprintf(what, sizeof what, "rho 1%+.0e th %.2f sd %.3g v0 %.2f", rho - 1, th, sd, v0);
-    band_case(prec, a, o, dn, opts, what, checked, inband, bad, len);
+    band_case(prec, fr->a, o, dn, opts, what, checked, inband, bad, len);
 }
 
 /* The sweep: rho = 1 ± 10^-k (k from k0 to 15 in double, to 8 in float) at the angles ths, from
@@ -530,8 +530,8 @@ static void test_precise_near_band_double(void) { check_precise_near_band(53); }
 /* An oblique axis a = (0.5, -0.75, 1.25): e1 = â × x̂ normalized, e2 = â × e1. */
 static band_frame oblique_frame(void)
 {
-    band_frame fr = {{0.5, -0.75, 1.25}, {0, 0, 0}, {0, 0, 0}};
-    double na = sqrt(0.5 * 0.5 + 0.75 * 0.75 + 1.25 * 1.25), n1;
+    band_frame fr = {{0.5, -0.75, 1.25}, 0, {0, 0, 0}, {0, 0, 0}};
+    double na = fr.na = sqrt(0.5 * 0.5 + 0.75 * 0.75 + 1.25 * 1.25), n1;
     int j;
     fr.e1[1] = fr.a[2] / na, fr.e1[2] = -fr.a[1] / na, n1 = sqrt(fr.e1[1] * fr.e1[1] + fr.e1[2] * fr.e1[2]);
     fr.e1[1] /= n1, fr.e1[2] /= n1;
@@ -572,7 +572,6 @@ static void check_precise_far_rim(int prec)
 {
     static const double phis[] = {0.4, 2.1, 4.0}, bes[] = {-1.2, -0.6, 0.6, 1.2}, sds[] = {1e3, 1e5, 1e7};
     const band_frame fr = oblique_frame();
-    const double c[3] = {0.25, -0.5, 0.125}, na = sqrt(0.5 * 0.5 + 0.75 * 0.75 + 1.25 * 1.25);
     int j, k, sg, pi, bi, si, caps, checked = 0, inband = 0, bad = 0;
     size_t len = 0;
     precise_or_skip();
@@ -587,8 +586,8 @@ static void check_precise_far_rim(int prec)
                             char what[80];
                             for (j = 0; j < 3; ++j) {
                                 n[j] = cos(phis[pi]) * fr.e1[j] + sin(phis[pi]) * fr.e2[j];
-                                p[j] = c[j] + n[j] + v * fr.a[j] / na;
-                                dn[j] = -cos(bes[bi]) * n[j] + sin(bes[bi]) * fr.a[j] / na;
+                                p[j] = band_c[j] + n[j] + v * fr.a[j] / fr.na;
+                                dn[j] = -cos(bes[bi]) * n[j] + sin(bes[bi]) * fr.a[j] / fr.na;
                                 o[j] = p[j] - sds[si] * dn[j];
                             }
                             snprintf(what, sizeof what, "rim v 1%+.0e phi %.1f be %.1f sd %.3g",

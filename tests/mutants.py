@@ -3,9 +3,10 @@
 
 Applies one deliberate bug at a time to a copy of cylinder_isect.h (in BUILD/mutants, never to
 the real file), builds tests/test_float.c, test_double.c (the contract tests of tests/contract/)
-and test_api.c against it (v2: and bench/test_accuracy.c) and counts the failing tests. A mutant is "killed" when at least one runner reports a failure. Patterns
-are text of the header: when the header is rewritten a pattern may no longer match; that
-mutant is reported as "stale" (update it), not as a failure.
+and test_api.c against it (v2: and bench/test_accuracy.c) and counts the failing tests. A mutant
+is "killed" when at least one runner reports a failure. Patterns are text of the header: when
+the header is rewritten a pattern may no longer match; that mutant is reported as "stale"
+(update it), not as a failure.
 
     make tests-mutants            (or: python3 tests/mutants.py [--header H] BUILD [index...])
     make tests-mutants V=2        the same on v2/cylinder_isect.h, with its own list (MUTANTS_V2)

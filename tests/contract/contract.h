@@ -13,6 +13,8 @@
  *   T_BIG_EXP     scale-invariance exponent for lengths (50 float, 400 double)
  *   T_DIR_EXP     scale exponent for d and a alone (60 float, 500 double)
  *   T_MAX_EXP     FLT_MAX_EXP / DBL_MAX_EXP
+ *   T_MAX         FLT_MAX / DBL_MAX
+ *   T_TINY_EXP    the smallest subnormal's exponent (-149 float, -1074 double)
  * and provides the named tolerances, the assertion helpers (each reports the caller's line), the
  * scene builders, the fixed generic scenes and the option sets the generic checks run under.
  * The long double model of the exact geometry that reference.c compares with is reference.h.
@@ -50,6 +52,8 @@
 #define T_DIR_EXP 500 /* d and a scaled by 2^+-500 */
 #define T_EDGE_EXPS 221, 225, 263, 323 /* lengths and d by 2^k: v2's hot range edge, 2^450 */
 #define T_MAX_EXP DBL_MAX_EXP
+#define T_MAX DBL_MAX
+#define T_TINY_EXP (DBL_MIN_EXP - DBL_MANT_DIG)
 #else
 #define T float
 #define CYL(x) cylf_##x
@@ -64,6 +68,8 @@
 #define T_DIR_EXP 60 /* d and a scaled by 2^+-60 */
 #define T_EDGE_EXPS 26, 30, 44, 58 /* lengths and d by 2^k: v2's hot range edge in float, 2^60 */
 #define T_MAX_EXP FLT_MAX_EXP
+#define T_MAX FLT_MAX
+#define T_TINY_EXP (FLT_MIN_EXP - FLT_MANT_DIG)
 #endif
 
 void setUp(void) {}
