@@ -536,7 +536,8 @@ CYL__INL void CYL__P(cross_exact)(const CYL__L x[3], const CYL__L y[3], CYL__L z
 }
 
 /* ------------------------------------------------------------------ entry points */
-CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits, int compact);
+CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, const CYL__P(frame) *f,
+                            unsigned opts, int want, CYL__N(hit) *hits, int compact);
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f);
 CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f);
 
@@ -571,11 +572,6 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
 #endif
     f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX), f.lo = CYL__HOT_LO;
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
-    if (CYL__CERT(&f, opts) && sizeof(CYL__L) == sizeof(CYL__R)) { /* w exact, for polish */
-        int i;
-        CYL__UNROLL for (i = 0; i < 3; i++)
-            f.wl[i] = CYL__P(sum_err)((CYL__L)ray->o[i], -(CYL__L)cyl->c[i], f.w[i]);
-    }
     ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
 #if defined(CYL__CVT2) && CYL__LD && !CYL__RD
     { CYL__P(pair) t; CYL__CVT2(t, (const unsigned char *)ray + 24); f.tmin = f.rmin = t[0], f.tmax = f.rmax = t[1]; }
@@ -586,7 +582,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
         return CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
     if (sizeof(CYL__L) > sizeof(CYL__R)) /* t representable in R: in the range (in_range) */
         f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);
-    ok = CYL__P(answer)(&f, opts, want, hits, 0);
+    ok = CYL__P(answer)(ray, cyl, &f, opts, want, hits, 0);
     return ok == CYL__DOUBT ? CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f)) : ok;
 }
 
@@ -637,8 +633,7 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     /* P = w·s = −m·d: with its accurate s and m the exact path takes the one of smaller error */
     if (f->cold && f->aww * f->A > f->mm * f->ad) f->P = -CYL__P(dot)(f->m, f->d);
     f->D = f->r2 * f->A - f->P * f->P; /* B² − AC = |a|²D (N3) */
-    f->sqaa = CYL__LSQRT(f->aa);
-    f->Ha = f->H * f->sqaa;
+    f->sqaa = CYL__LSQRT(f->aa), f->Ha = f->H * f->sqaa;
     /* min passes a NaN on only as its second operand (h's is Ha's); the sum passes every one */
     lo = CYL__P(min)(CYL__P(min)(f->r * f->sqaa, f->r2aa), CYL__P(min)(f->ad, f->Ha));
     /* the hot path's margin for the exact path: parallel rays and, unless L makes the inputs'
@@ -658,11 +653,7 @@ CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f)
 /* The wall (N3, N6): 0 the ray line misses the infinite tube, 1 a tangent contact (e within the
    band), 2 two crossings; e = D/(r²A). */
 CYL__INL int CYL__P(classify_wall)(const CYL__P(frame) *f)
-{
-    CYL__L band = (CYL__L)CYL__TANG * (f->r2 * f->A);
-    if (f->D > band) return 2;
-    return f->D >= -band ? 1 : 0;
-}
+{ CYL__L band = (CYL__L)CYL__TANG * (f->r2 * f->A); return f->D > band ? 2 : f->D >= -band; }
 
 /* The wall roots in t order from the stable pair (N4); a contact in the band without a real
    root (D <= 0) is the point of closest approach, twice. Returns √(|a|²D). */
@@ -780,10 +771,7 @@ CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x
 CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts, int side, CYL__L n[3])
 {
     CYL__L as[3], g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 : 1, h = x->h, P = f->P, q;
-    if (!side) {
-        CYL__P(mul3)(x->part == CYL_CAP_HIGH ? g / f->sqaa : -g / f->sqaa, f->a, n);
-        return;
-    }
+    if (!side) { CYL__P(mul3)(x->part == CYL_CAP_HIGH ? g / f->sqaa : -g / f->sqaa, f->a, n); return; }
     if (f->cold && (q = CYL__P(max)(CYL__P(abs)(P), CYL__P(abs)(h) / f->sqaa)) > 0)
         P /= q, h /= q; /* the exact path's P² can leave the range (the hot path's cannot, N2) */
     else if (f->cold) h = x->flags & CYL_F_INSIDE ? f->aa : -f->aa; /* P = D = 0 (hot: q >= r²A) */
@@ -832,8 +820,7 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsig
    inside the band is the exact path's: its roots move by u/√e). */
 CYL__INL int CYL__P(band_doubt)(const CYL__P(frame) *f)
 {
-    CYL__L band = (CYL__L)CYL__TANG * (f->r2 * f->A);
-    CYL__L eD = CYL__P(noise)(f) * (f->aww + f->r2aa) * (f->A / f->aa);
+    CYL__L band = (CYL__L)CYL__TANG * (f->r2 * f->A), eD = CYL__P(noise)(f) * (f->aww + f->r2aa) * (f->A / f->aa);
     return !(f->D - band > eD) && !(f->D + band < -eD);
 }
 
@@ -848,10 +835,24 @@ CYL__INL int CYL__P(bounds)(const CYL__P(frame) *f, const CYL__L v[4], CYL__L sq
     return !(CYL__P(first_order)(f, CYL__P(max)(e[0], e[1]), sq) && ed <= CYL__K(0.5)); /* and ζ */
 }
 
+/* polish of a hot path's t from the caller's inputs, so that its frame stays in registers (N9). */
+CYL__OUT CYL__L CYL__P(polish_hot)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, CYL__L t, int part, CYL__L gap)
+{
+    CYL__P(frame) f;
+    int i;
+    CYL__UNROLL for (i = 0; i < 3; i++) {
+        f.w[i] = (CYL__L)ray->o[i] - (CYL__L)cyl->c[i], f.d[i] = (CYL__L)ray->d[i], f.a[i] = (CYL__L)cyl->a[i];
+        f.wl[i] = CYL__P(sum_err)((CYL__L)ray->o[i], -(CYL__L)cyl->c[i], f.w[i]);
+    }
+    f.r = (CYL__L)cyl->r, f.H = (CYL__L)cyl->h * CYL__K(0.5), CYL__P(cross3)(f.a, f.d, f.s);
+    return CYL__X(polish)(&f, t, part, gap, 0);
+}
+
 /* The crossings in t order; occluded and intersect stop at the first, and nothing is emitted
    before every decision it depends on is certain (CYL_PRECISE: else CYL__DOUBT, N9). compact
    (a literal: the exact path's 1): one emit site for every hit, its code once, for size. */
-CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL__N(hit) *hits, int compact)
+CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, const CYL__P(frame) *f,
+                            unsigned opts, int want, CYL__N(hit) *hits, int compact)
 {
     CYL__L v[4], sq = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : 0, l[4] = {0, 0, 0, 0};
     CYL__P(cross) x, y;
@@ -870,8 +871,8 @@ CYL__INL int CYL__P(answer)(const CYL__P(frame) *f, unsigned opts, int want, CYL
         y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan); /* each answers on one path */
         if (x.doubt || y.doubt) return CYL__DOUBT;
         if (pol) { /* each crossing emitted moved onto its residual's root */
-            if (x.ok) x.t = CYL__X(polish)(f, x.t, x.part, sq / f->A, 0);
-            if (y.ok && !alone) y.t = CYL__X(polish)(f, y.t, y.part, sq / f->A, 0);
+            if (x.ok) x.t = CYL__P(polish_hot)(ray, cyl, x.t, x.part, sq / f->A);
+            if (y.ok && !alone) y.t = CYL__P(polish_hot)(ray, cyl, y.t, y.part, sq / f->A);
         }
     }
     if (alone && !compact) {
@@ -951,8 +952,7 @@ CYL__OUT CYL__L CYL__P(resid)(const CYL__P(frame) *f, const CYL__L ra[3], CYL__L
         yh = CYL__P(acc_pair)(&q, &yl);
         CYL__P(acc_mul)(&F, yh, yh), F.c += 2 * yh * yl, g += yh * f->s[i];
     }
-    *gp = g;
-    return F.s + F.c;
+    return *gp = g, F.s + F.c;
 }
 
 /* z0 = a·w (w exact as w + wl) and ζ = a·d as compensated sums (N8). */
@@ -971,8 +971,7 @@ CYL__COLD void CYL__P(exact_frame)(CYL__P(frame) *f)
 {
     CYL__L sa[2], ra[3], F, g;
     CYL__P(acc) z, ze;
-    CYL__P(axial)(f, &z, &ze);
-    f->z0 = z.s + z.c, f->zeta = ze.s + ze.c;
+    CYL__P(axial)(f, &z, &ze), f->z0 = z.s + z.c, f->zeta = ze.s + ze.c;
     if (f->par) return;
     CYL__P(norm_a)(f, sa, ra);
     F = CYL__P(resid)(f, ra, f->tc = -f->B / f->A, &g);
@@ -990,8 +989,7 @@ CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__
     if (part != CYL_SIDE) { /* a·w + H|a| + tζ on the low plane, ζ = a·d summed first */
         CYL__P(norm_a)(f, sa, ra);
         H = part == CYL_CAP_LOW ? f->H : -f->H, Hh = H * sa[0];
-        CYL__P(axial)(f, &F, &Z);
-        zh = CYL__P(acc_pair)(&Z, &zl);
+        CYL__P(axial)(f, &F, &Z), zh = CYL__P(acc_pair)(&Z, &zl);
         CYL__P(acc_add)(&F, Hh), F.c += CYL__P(prod_err)(H, sa[0], Hh) + H * sa[1];
         CYL__P(acc_mul)(&F, t, zh), F.c += t * zl;
         v = t + (dt = -(F.s + F.c) / (zh + zl));
@@ -1091,7 +1089,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     }
     f->par = CYL__P(parallel)(f) <= 0;
     if (f->exact) CYL__X(exact_frame)(f);
-    return CYL__P(answer)(f, opts, want, hits, 1);
+    return CYL__P(answer)(ray, cyl, f, opts, want, hits, 1);
 }
 
 #ifndef CYL__HELPER
@@ -1192,9 +1190,10 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        plus 4u|t|, while this is below √(|a|²D)/A (first order); D by k·S·A/|a|²; a slab end by 64u(|a||w| +
        Ha + |t||a||d|)/|ζ| + 2u|t|, while |ζ| > 128u|a||d|. A NaN or infinite bound, or a contact inside the
        band (its roots move by u/√e), certifies nothing. Each crossing the double API emits then takes N8's
-       step (polish): 36 ulps on the hot path, the tier promises 2; the float API's, computed in double, is
-       within 2^-29 already. Helper bodies take CYL_PRECISE calls out of line: the float API's in double where
-       it computes in float; on x86-64 built without the FMA, both APIs' built with it where the CPU has it
-       (CYL_FMA_DISPATCH; not the double API's occluded): one instruction per exact product, nothing
-       contracted or vectorized, the same bits.
+       step (polish, out of line from the caller's inputs, so that the hot frame stays in registers): 36 ulps
+       on the hot path, the tier promises 2; the float API's, computed in double, is within 2^-29 already.
+       Helper bodies take CYL_PRECISE calls out of line: the float API's in double where it computes in float;
+       on x86-64 built without the FMA, both APIs' built with it where the CPU has it (CYL_FMA_DISPATCH; not
+       the double API's occluded): one instruction per exact product, nothing contracted or vectorized, the
+       same bits.
 */
