@@ -793,9 +793,9 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsig
     CYL__L n[3] = {0, 0, 0}, t = x->t, err = CYL__LINF, v;
     CYL__R tr, vr, er;
     const int side = !(opts & CYL_CAPS) || x->part == CYL_SIDE; /* the open tube emits walls alone */
-    v = side ? CYL__P(axial_v)(f, t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
-    if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, x, opts, side, n);
     if (!(opts & CYL_NO_ERRBOUND)) err = side ? CYL__P(bound_wall)(f, x) : CYL__P(bound_cap)(f, x);
+    if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, x, opts, side, n);
+    v = side ? CYL__P(axial_v)(f, t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
     if (f->cold) {
         CYL__L t0 = CYL__LT(scale)(t, f->et);
         t = CYL__P(max)(f->rmin, CYL__P(min)(t0, f->rmax));
