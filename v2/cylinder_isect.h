@@ -536,10 +536,18 @@ CYL__INL void CYL__P(cross_exact)(const CYL__L x[3], const CYL__L y[3], CYL__L z
 }
 
 /* ------------------------------------------------------------------ entry points */
-CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, const CYL__P(frame) *f,
-                            unsigned opts, int want, CYL__N(hit) *hits, int compact);
+CYL__INL int CYL__P(answer)(const CYL__N(ray) *, const CYL__N(cylinder) *, const CYL__P(frame) *, unsigned, int, CYL__N(hit) *, int);
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f);
 CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f);
+
+/* The inputs in L: w = o − c, d, a, r, H = h/2 (written out: the frame stays in registers). */
+CYL__INL void CYL__P(load)(CYL__P(frame) *f, const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl)
+{
+    f->w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0], f->d[0] = (CYL__L)ray->d[0], f->r = (CYL__L)cyl->r;
+    f->w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1], f->d[1] = (CYL__L)ray->d[1], f->H = (CYL__L)cyl->h * CYL__K(0.5);
+    f->w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2], f->d[2] = (CYL__L)ray->d[2];
+    f->a[0] = (CYL__L)cyl->a[0], f->a[1] = (CYL__L)cyl->a[1], f->a[2] = (CYL__L)cyl->a[2];
+}
 
 /* The hot path: the frame, one range test, the answer; what the test refuses (invalid, out of
    range, near the axis direction, an unknown option) goes to the exact path. want: 0 occluded,
@@ -563,12 +571,8 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
         f.a[0] = ca[1], f.a[1] = aa[0], f.a[2] = aa[1], f.r = rh[0], f.H = rh[1] * CYL__K(0.5);
     }
 #else
-    if (sizeof(CYL__L) > sizeof(CYL__R)) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); }
-    f.w[0] = (CYL__L)ray->o[0] - (CYL__L)cyl->c[0], f.d[0] = (CYL__L)ray->d[0];
-    f.w[1] = (CYL__L)ray->o[1] - (CYL__L)cyl->c[1], f.d[1] = (CYL__L)ray->d[1];
-    f.w[2] = (CYL__L)ray->o[2] - (CYL__L)cyl->c[2], f.d[2] = (CYL__L)ray->d[2];
-    f.a[0] = (CYL__L)cyl->a[0], f.a[1] = (CYL__L)cyl->a[1], f.a[2] = (CYL__L)cyl->a[2];
-    f.r = (CYL__L)cyl->r, f.H = (CYL__L)cyl->h * CYL__K(0.5);
+    if (sizeof(CYL__L) > sizeof(CYL__R)) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); } /* here: the t range reads too */
+    CYL__P(load)(&f, ray, cyl);
 #endif
     f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX), f.lo = CYL__HOT_LO;
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
@@ -840,12 +844,9 @@ CYL__OUT CYL__L CYL__P(polish_hot)(const CYL__N(ray) *ray, const CYL__N(cylinder
 {
     CYL__P(frame) f;
     int i;
-    CYL__UNROLL for (i = 0; i < 3; i++) {
-        f.w[i] = (CYL__L)ray->o[i] - (CYL__L)cyl->c[i], f.d[i] = (CYL__L)ray->d[i], f.a[i] = (CYL__L)cyl->a[i];
+    CYL__UNROLL for (CYL__P(load)(&f, ray, cyl), i = 0; i < 3; i++) /* w exact as w + wl */
         f.wl[i] = CYL__P(sum_err)((CYL__L)ray->o[i], -(CYL__L)cyl->c[i], f.w[i]);
-    }
-    f.r = (CYL__L)cyl->r, f.H = (CYL__L)cyl->h * CYL__K(0.5), CYL__P(cross3)(f.a, f.d, f.s);
-    return CYL__X(polish)(&f, t, part, gap, 0);
+    return CYL__P(cross3)(f.a, f.d, f.s), CYL__X(polish)(&f, t, part, gap, 0);
 }
 
 /* The crossings in t order; occluded and intersect stop at the first, and nothing is emitted
