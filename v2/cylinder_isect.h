@@ -483,8 +483,7 @@ static int CYL__P(cold)(const CYL__N(ray) *, const CYL__N(cylinder) *, unsigned,
 CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return CYL__LABS(x); }
 CYL__INL CYL__L CYL__P(max)(CYL__L x, CYL__L y) { return x > y ? x : y; }
 CYL__INL CYL__L CYL__P(min)(CYL__L x, CYL__L y) { return x < y ? x : y; }
-CYL__INL CYL__L CYL__P(dot)(const CYL__L x[3], const CYL__L y[3])
-{ return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
+CYL__INL CYL__L CYL__P(dot)(const CYL__L x[3], const CYL__L y[3]) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
 CYL__INL void CYL__P(cross3)(const CYL__L x[3], const CYL__L y[3], CYL__L z[3])
 { z[0] = x[1] * y[2] - x[2] * y[1], z[1] = x[2] * y[0] - x[0] * y[2], z[2] = x[0] * y[1] - x[1] * y[0]; }
 /* z = x·p + y·q, componentwise, written out (no loop: the frame stays in registers). */
@@ -492,13 +491,10 @@ CYL__INL void CYL__P(lin)(CYL__L p, const CYL__L x[3], CYL__L q, const CYL__L y[
 { z[0] = x[0] * p + y[0] * q, z[1] = x[1] * p + y[1] * q, z[2] = x[2] * p + y[2] * q; }
 /* A pair (N1) and the pair (x, y). */
 CYL__PAIR(CYL__L, CYL__P(pair));
-CYL__INL CYL__P(pair) CYL__P(pr)(CYL__L x, CYL__L y)
-{ CYL__P(pair) p; CYL__LANE(p, 0) = x, CYL__LANE(p, 1) = y; return p; }
+CYL__INL CYL__P(pair) CYL__P(pr)(CYL__L x, CYL__L y) { CYL__P(pair) p; CYL__LANE(p, 0) = x, CYL__LANE(p, 1) = y; return p; }
 /* x + y − s for s = x + y rounded, exactly (Knuth's TwoSum). */
-CYL__INL CYL__L CYL__P(sum_err)(CYL__L x, CYL__L y, CYL__L s)
-{ CYL__L z = s - x; return (x - (s - z)) + (y - z); }
-CYL__INL void CYL__P(mul3)(CYL__L p, const CYL__L x[3], CYL__L z[3])
-{ z[0] = x[0] * p, z[1] = x[1] * p, z[2] = x[2] * p; }
+CYL__INL CYL__L CYL__P(sum_err)(CYL__L x, CYL__L y, CYL__L s) { CYL__L z = s - x; return (x - (s - z)) + (y - z); }
+CYL__INL void CYL__P(mul3)(CYL__L p, const CYL__L x[3], CYL__L z[3]) { z[0] = x[0] * p, z[1] = x[1] * p, z[2] = x[2] * p; }
 CYL__INL CYL__L CYL__P(amax)(const CYL__L x[3])
 { return CYL__P(max)(CYL__P(max)(CYL__P(abs)(x[0]), CYL__P(abs)(x[1])), CYL__P(abs)(x[2])); }
 /* x·2^k for any k, in steps of normal powers of two: only the last step can round. */
@@ -651,8 +647,7 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 /* ------------------------------------------------------------------ decisions */
 /* Parallel (N7): sin²(d, a) = A/(|a|²|d|²) at most the tolerance's square; as a margin, the
    ray is parallel where it is <= 0. */
-CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f)
-{ return f->A / ((CYL__L)CYL__PARA * (CYL__L)CYL__PARA) - f->ad; }
+CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f) { return f->A / ((CYL__L)CYL__PARA * (CYL__L)CYL__PARA) - f->ad; }
 
 /* The wall (N3, N6): 0 the ray line misses the infinite tube, 1 a tangent contact (e within the
    band), 2 two crossings; e = D/(r²A). */
@@ -772,15 +767,19 @@ CYL__INL CYL__L CYL__P(bound_cap)(const CYL__P(frame) *f, const CYL__P(cross) *x
 /* The unit normal (N5). The wall's outward one is y × a at the crossing, which from the roots
    is P|a|²·s ∓ √(|a|²D)·(a × s) (entry −, exit +): no cancellation for far origins; its length
    follows from P and h alone. A cap's is ±a. The ray-facing one turns at an exit (CYL_F_INSIDE). */
-CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts, int side, CYL__L n[3])
+CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl, const CYL__P(cross) *x,
+                             unsigned opts, int side, CYL__L n[3])
 {
-    CYL__L as[3], g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 : 1, h = x->h, P = f->P, q;
-    if (!side) { CYL__P(mul3)(x->part == CYL_CAP_HIGH ? g / f->sqaa : -g / f->sqaa, f->a, n); return; }
+    CYL__L as[3], a[3], g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 : 1, h = x->h, P = f->P, q;
+    /* a: the hot path in R's type reads it again from the caller, as operands (the frame's spills) */
+    if (f->cold || sizeof(CYL__L) > sizeof(CYL__R)) CYL__P(mul3)(1, f->a, a);
+    else { CYL__LAUNDER(cyl); a[0] = (CYL__L)cyl->a[0], a[1] = (CYL__L)cyl->a[1], a[2] = (CYL__L)cyl->a[2]; }
+    if (!side) { CYL__P(mul3)(x->part == CYL_CAP_HIGH ? g / f->sqaa : -g / f->sqaa, a, n); return; }
     if (f->cold && (q = CYL__P(max)(CYL__P(abs)(P), CYL__P(abs)(h) / f->sqaa)) > 0)
         P /= q, h /= q; /* the exact path's P² can leave the range (the hot path's cannot, N2) */
     else if (f->cold) h = x->flags & CYL_F_INSIDE ? f->aa : -f->aa; /* P = D = 0 (hot: q >= r²A) */
     q = P * P + h * h / f->aa; /* |P|a|²s ∓ h(a × s)| = |a|²√(Aq) (N5) */
-    CYL__P(cross3)(f->a, f->s, as);
+    CYL__P(cross3)(a, f->s, as);
     q = 1 / CYL__LSQRT(f->A * q);
     CYL__P(lin)(P * q, f->s, -h / f->aa * q, as, n);
     CYL__P(mul3)(g, n, n); /* turned last: the two normals negate bit for bit */
@@ -792,13 +791,14 @@ CYL__INL CYL__L CYL__P(axial_v)(const CYL__P(frame) *f, CYL__L t)
 
 /* The hit in the caller's units and type: t, t_err, v unscaled (exact path), t kept in range,
    t_err widened by t's rounding into R and rounded up, v within h/2 after its rounding. */
-CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__P(cross) *x, unsigned opts, CYL__N(hit) *hit)
+CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl, const CYL__P(cross) *x, unsigned opts,
+                          CYL__N(hit) *hit)
 {
     CYL__L n[3] = {0, 0, 0}, t = x->t, err = CYL__LINF, v;
     CYL__R tr, vr, er;
     const int side = !(opts & CYL_CAPS) || x->part == CYL_SIDE; /* the open tube emits walls alone */
     if (!(opts & CYL_NO_ERRBOUND)) err = side ? CYL__P(bound_wall)(f, x) : CYL__P(bound_cap)(f, x);
-    if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, x, opts, side, n);
+    if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, cyl, x, opts, side, n);
     v = side ? CYL__P(axial_v)(f, t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
     if (f->cold) {
         CYL__L t0 = CYL__LT(scale)(t, f->et);
@@ -877,13 +877,13 @@ CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         }
     }
     if (alone && !compact) {
-        if (want) CYL__P(emit)(f, &x, opts, hits);
+        if (want) CYL__P(emit)(f, cyl, &x, opts, hits);
         return 1;
     }
     if (alone) y = x; /* compact: the one emit below */
     else if (!e) y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan);
-    if (x.ok && want == 2) CYL__P(emit)(f, &x, opts, &hits[n++]);
-    if (y.ok && want) CYL__P(emit)(f, &y, opts, &hits[n]);
+    if (x.ok && want == 2) CYL__P(emit)(f, cyl, &x, opts, &hits[n++]);
+    if (y.ok && want) CYL__P(emit)(f, cyl, &y, opts, &hits[n]);
     return n + y.ok;
 }
 
