@@ -14,7 +14,7 @@
 #   runners   CYL_NO_FLOAT, CYL_NO_DOUBLE, -DCYL_NO_PRECISE, user overrides (CYL_SQRTF/CYL_SQRT/
 #             CYL_FMAF/CYL_FMA/CYL_DEF and the tolerance macros), two translation units linked
 #             together (the last two also as C++11); the contract suite with CYL_FLOAT_WIDE=0,
-#             with CYL_NO_FAST_PATH (not under V=2), with a hardware FMA (-mfma, where this
+#             float-only (CYL_NO_DOUBLE), the double API with CYL_NO_PRECISE, with CYL_NO_FAST_PATH (not under V=2), with a hardware FMA (-mfma, where this
 #             machine has one), built for size (-Os, V=2 only), and with every entry point forced inline
 #             (tests/config/cfg_forced_inline.h; not under V=2, where that is the default)
 #   prereq    -ffast-math must stop the build at the header's #error (gcc and clang)
@@ -84,6 +84,11 @@ $(eval $(call TESTS_CFG_RUNNER,two_tu_cxx,tests/config/cfg_two_tu_main.c tests/c
 # double FPU), and Kahan's FMA products where the FMA is hardware (x86-64 with FMA3 only, so
 # that the runner can execute here).
 $(eval $(call TESTS_CFG_RUNNER,float_narrow,tests/test_float.c,-DCYL_FLOAT_WIDE=0,c))
+# The contract suite without the precise tier: as a float-only firmware builds it (CYL_NO_DOUBLE:
+# float computed in float; v2 then defines CYL_NO_PRECISE, which also leaves the exact path's
+# Newton steps out), and the double API under CYL_NO_PRECISE.
+$(eval $(call TESTS_CFG_RUNNER,float_only,tests/test_float.c,-DCYL_NO_DOUBLE,c))
+$(eval $(call TESTS_CFG_RUNNER,no_precise_double,tests/test_double.c,-DCYL_NO_PRECISE,c))
 # v1 only (V=2 leaves these out): the contract suite with every entry point forced inline (the
 # header's advice where a caller calls one from several places: each call site folds its own
 # constant options), which is v2's default CYL_DEF, so the runner would repeat test_float; and

@@ -87,7 +87,7 @@
      CYL_NO_FLOAT          undefined                    leave out cylf_* (and its code)
      CYL_NO_DOUBLE         undefined                    leave out cyld_*: no double anywhere
      CYL_NO_PRECISE        undefined; defined with      compile out CYL_PRECISE (the bit then
-                           CYL_NO_DOUBLE                returns CYL_E_OPTION)
+                           CYL_NO_DOUBLE                returns CYL_E_OPTION) and N8's steps
      CYL_DEF               static inline (forced, gcc   qualifier of every public function;
                            and clang but at -O0, -Os)   `static inline` lets calls share code
      CYL_SQRTF, CYL_SQRT   the instruction (x86-64,     square roots
@@ -112,7 +112,7 @@
    0.5 ulps in every family, both APIs, at 372 (float) and 626 (double) instructions per
    capped call, 3.1 and 5.3 times the end-point routine's (REPORT's headline; `make cost`).
    Default: float within 0.5 ulps; double within 0.5 on the tiny and huge families (2^∓400:
-   the exact path's, N2, N8), on the hot path within 7 ulps on the well family's walls, 14.4
+   the exact path's N8 steps), on the hot path within 7 ulps on the well family's walls, 14.4
    on its caps (z0 + Ha cancels, N6), 271 for origins far along the axis (thin). Per unit of
    the data's condition κ (o − c, d, a, r, h each moved by a relative u move t by κ·u·|t|;
    REPORT's ulps/κ) double errs by at most 1.7 on those families, 2.7 on all.
@@ -864,7 +864,7 @@ CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     if (!f->par) sq = CYL__P(wall_roots)(f, v);
     else v[0] = -CYL__LINF, v[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
     CYL__P(slab)(f, v + 2);
-    if (f->cold && f->exact) CYL__X(refine)(f, v, opts & CYL_PRECISE ? l : 0); /* N8 */
+    if ((CYL__SUPPORTED & CYL_PRECISE) && f->cold && f->exact) CYL__X(refine)(f, v, opts & CYL_PRECISE ? l : 0); /* N8 */
     pol = e && sizeof(CYL__L) == sizeof(CYL__R) && want; /* the double API's t to an ulp */
     if (e && CYL__P(bounds)(f, v, sq, e)) return CYL__DOUBT;
     x = CYL__P(crossing)(f, opts, 0, v, e, l, sq, tan), alone = x.ok && want < 2; /* entry, then exit: no loop, so */
@@ -1012,16 +1012,15 @@ CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__
    low parts, for the rim to compare the pairs. */
 CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l)
 {
-    CYL__L *q = CYL__SUPPORTED & CYL_PRECISE ? l : 0; /* folds under CYL_NO_PRECISE */
-    CYL__L lo = CYL__P(polish)(f, v[2], CYL__CAP_PART(f, 0), 0, q ? &q[2] : 0);
-    CYL__L hi = CYL__P(polish)(f, v[3], CYL__CAP_PART(f, 1), 0, q ? &q[3] : 0);
+    CYL__L lo = CYL__P(polish)(f, v[2], CYL__CAP_PART(f, 0), 0, l ? &l[2] : 0);
+    CYL__L hi = CYL__P(polish)(f, v[3], CYL__CAP_PART(f, 1), 0, l ? &l[3] : 0);
     CYL__L gap = f->D > 0 ? CYL__LSQRT(f->aa * f->D) / f->A : 0; /* half the roots' distance */
     if (lo <= hi) v[2] = lo, v[3] = hi;
-    else if (q) q[2] = q[3] = 0;
+    else if (l) l[2] = l[3] = 0;
     if (f->par) return;
     v[0] = v[1] = f->tc; /* a contact without roots stays there */
-    if (gap > 0) v[0] = CYL__P(polish)(f, v[0] - gap, CYL_SIDE, gap, q ? &q[0] : 0),
-                 v[1] = CYL__P(polish)(f, v[1] + gap, CYL_SIDE, gap, q ? &q[1] : 0);
+    if (gap > 0) v[0] = CYL__P(polish)(f, v[0] - gap, CYL_SIDE, gap, l ? &l[0] : 0),
+                 v[1] = CYL__P(polish)(f, v[1] + gap, CYL_SIDE, gap, l ? &l[1] : 0);
 }
 #endif /* CYL__XOWN */
 
@@ -1089,7 +1088,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         f->r = CYL__P(max)(f->r, CYL__LSQRT(f->lo) * 2), f->H = CYL__P(max)(f->H, f->lo * 2), f->exact = 0;
     }
     f->par = CYL__P(parallel)(f) <= 0;
-    if (f->exact) CYL__X(exact_frame)(f);
+    if ((CYL__SUPPORTED & CYL_PRECISE) && f->exact) CYL__X(exact_frame)(f); /* N8 */
     return CYL__P(answer)(ray, cyl, f, opts, want, hits, 1);
 }
 
@@ -1181,7 +1180,8 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        (a × x)·s = F'/2, so D = (g² − AF)/|a|² whatever t's rounding (the plain D errs by u·r²A·|w|/r and
        more). t_c takes one step on g (g' = A); the roots start at t_c ± √(|a|²D)/A (the plain C cancels for
        an origin on the wall), each refined while its steps stay within that half gap; without roots, a
-       contact is at t_c.
+       contact is at t_c. CYL_NO_PRECISE (so every float-only build) compiles none of this: the exact path
+       then answers from its s and m (N1) and the scaled inputs with the hot path's arithmetic alone.
    N9. The certified layer (CYL_PRECISE on the hot path) takes each comparison an answer depends on (tangent
        band, rims, t range, entry and exit, both crossings whatever the entry point) only where its operands
        lie farther apart than their bounds' sum; else the exact path answers. The bounds are a priori, from
