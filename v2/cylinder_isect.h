@@ -880,7 +880,7 @@ CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         if (want) CYL__P(emit)(f, cyl, &x, opts, hits);
         return 1;
     }
-    if (alone) y = x; /* compact: the one emit below */
+    if (alone) y.t = x.t, y.h = x.h, y.part = x.part, y.ok = x.ok, y.flags = x.flags; /* y = x: memcpy (RV32) */
     else if (!e) y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan);
     if (x.ok && want == 2) CYL__P(emit)(f, cyl, &x, opts, &hits[n++]);
     if (y.ok && want) CYL__P(emit)(f, cyl, &y, opts, &hits[n]);
@@ -1028,14 +1028,14 @@ CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l)
 static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
 {
     const CYL__R *v[4] = {ray->o, ray->d, cyl->c, cyl->a};
-    int i, k, zero[4] = {1, 1, 1, 1};
+    unsigned i, k, nonzero = 0; /* bit k: v[k] has a nonzero component (an array's init: memcpy) */
     if (opts & CYL_TRUSTED) return opts & ~CYL__SUPPORTED ? CYL_E_OPTION : 0;
     for (k = 0; k < 4; k++)
         for (i = 0; i < 3; i++) {
             if (!(v[k][i] >= -CYL__RMAX && v[k][i] <= CYL__RMAX)) return CYL_E_NONFINITE;
-            if (v[k][i] < 0 || v[k][i] > 0) zero[k] = 0;
+            if (v[k][i] < 0 || v[k][i] > 0) nonzero |= 1u << k;
         }
-    if (zero[1] | zero[3]) return zero[1] ? CYL_E_ZERO_DIR : CYL_E_ZERO_AXIS;
+    if ((nonzero & (2u | 8u)) != (2u | 8u)) return nonzero & 2u ? CYL_E_ZERO_AXIS : CYL_E_ZERO_DIR; /* d, a */
     if (!(cyl->r > 0) || !(cyl->r <= CYL__RMAX)) return CYL_E_RADIUS;
     if (!(cyl->h > 0)) return CYL_E_HEIGHT;
     if (!(ray->tmin <= ray->tmax)) return CYL_E_TRANGE;
