@@ -880,7 +880,7 @@ CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         if (want) CYL__P(emit)(f, cyl, &x, opts, hits);
         return 1;
     }
-    if (alone) y.t = x.t, y.h = x.h, y.part = x.part, y.ok = x.ok, y.flags = x.flags; /* y = x: memcpy (RV32) */
+    if (alone) y.t = x.t, y.h = x.h, y.part = x.part, y.ok = x.ok, y.flags = x.flags; /* not y = x (RV32: memcpy) */
     else if (!e) y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan);
     if (x.ok && want == 2) CYL__P(emit)(f, cyl, &x, opts, &hits[n++]);
     if (y.ok && want) CYL__P(emit)(f, cyl, &y, opts, &hits[n]);
@@ -1028,7 +1028,7 @@ CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l)
 static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
 {
     const CYL__R *v[4] = {ray->o, ray->d, cyl->c, cyl->a};
-    unsigned i, k, nonzero = 0; /* bit k: v[k] has a nonzero component (an array's init: memcpy) */
+    unsigned i, k, nonzero = 0; /* bit k: v[k] has a nonzero component (an int[4]'s initializer calls memcpy on RV32) */
     if (opts & CYL_TRUSTED) return opts & ~CYL__SUPPORTED ? CYL_E_OPTION : 0;
     for (k = 0; k < 4; k++)
         for (i = 0; i < 3; i++) {
