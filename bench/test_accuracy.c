@@ -33,17 +33,12 @@
 #endif
 
 /* Target 3 needs CYL_PRECISE, absent where the header defines CYL_NO_PRECISE (v2 with
-   CYL_NO_DOUBLE): its tests are then ignored (counted as skipped by make test), and only
-   then. */
+   CYL_NO_DOUBLE, and the test_accuracy_noprec runner): main then leaves its tests out. */
 #ifdef CYL_NO_PRECISE
 #define HAVE_PRECISE 0
 #else
 #define HAVE_PRECISE 1
 #endif
-static void precise_or_skip(void)
-{
-    if (!HAVE_PRECISE) TEST_IGNORE_MESSAGE("needs CYL_PRECISE, compiled out (CYL_NO_PRECISE)");
-}
 
 /* Exact equality, for the places where exactness is the point (-Wfloat-equal forbids ==). */
 static int same(double a, double b) { return !(a < b) && !(a > b) && a - a < 1 && b - b < 1; }
@@ -346,7 +341,6 @@ static void check_precise_trange_grazing(int prec)
     int i, caps, side, checked = 0, bad = 0;
     size_t len = 0;
     double band = ldexp(1.0, -(prec - 8));
-    precise_or_skip();
     msg[0] = 0;
     for (i = 0; i < TRANGE_CASES; ++i)
         for (caps = 0; caps < 2; ++caps) {
@@ -518,7 +512,6 @@ static void check_precise_near_band(int prec)
 {
     static const double sds[] = {3, 5.5, 8}, v0s[] = {-0.7, 0.2, 1.1, 1.5}; /* the last: the high rim */
     int checked = 0, inband = 0;
-    precise_or_skip();
     sweep_band(prec, &z_axis, 2, sds, 3, v0s, 4, &checked, &inband);
     /* every k covered; in double k = 14, 15 (and in float 6 .. 8) lie inside the band */
     TEST_ASSERT_TRUE(inband >= checked / 8);
@@ -553,7 +546,6 @@ static void check_precise_far_band(int prec)
     static const double sds[] = {1e3, 1e5, 1e7}, v0s[] = {-0.7, 0.2, 1.1};
     const band_frame fr = oblique_frame();
     int checked = 0, inband = 0;
-    precise_or_skip();
     sweep_band(prec, &fr, prec == 24 ? 3 : 9, sds, 3, v0s, 3, &checked, &inband);
     /* k from outside the band into it: 864 float, 1008 double cases, 30 and 38 of them in it */
     TEST_ASSERT_TRUE(inband > 0 && inband < checked / 8);
@@ -574,7 +566,6 @@ static void check_precise_far_rim(int prec)
     const band_frame fr = oblique_frame();
     int j, k, sg, pi, bi, si, caps, checked = 0, inband = 0, bad = 0;
     size_t len = 0;
-    precise_or_skip();
     msg[0] = 0;
     for (k = prec == 24 ? 3 : 6; k <= (prec == 24 ? 6 : 13); ++k)
         for (sg = -1; sg <= 1; sg += 2)
@@ -611,15 +602,17 @@ int main(void)
     RUN_TEST(test_default_terr_float_width);
     RUN_TEST(test_default_path_float);
     RUN_TEST(test_default_path_double);
-    RUN_TEST(test_precise_float);
-    RUN_TEST(test_precise_double);
-    RUN_TEST(test_precise_trange_grazing_float);
-    RUN_TEST(test_precise_trange_grazing_double);
-    RUN_TEST(test_precise_near_band_float);
-    RUN_TEST(test_precise_near_band_double);
-    RUN_TEST(test_precise_far_band_float);
-    RUN_TEST(test_precise_far_band_double);
-    RUN_TEST(test_precise_far_rim_float);
-    RUN_TEST(test_precise_far_rim_double);
+    if (HAVE_PRECISE) { /* the precise tier's targets where it is compiled in (not under CYL_NO_PRECISE) */
+        RUN_TEST(test_precise_float);
+        RUN_TEST(test_precise_double);
+        RUN_TEST(test_precise_trange_grazing_float);
+        RUN_TEST(test_precise_trange_grazing_double);
+        RUN_TEST(test_precise_near_band_float);
+        RUN_TEST(test_precise_near_band_double);
+        RUN_TEST(test_precise_far_band_float);
+        RUN_TEST(test_precise_far_band_double);
+        RUN_TEST(test_precise_far_rim_float);
+        RUN_TEST(test_precise_far_rim_double);
+    }
     return UNITY_END();
 }

@@ -1,5 +1,5 @@
 # Exact reference, stiff/extreme case families, error and cost against the alternatives.
-#   make test     runs build/bench/test_accuracy{,_narrow,_fma} (accuracy targets on a fixed-seed
+#   make test     runs build/bench/test_accuracy{,_narrow,_noprec,_fma} (accuracy targets on a fixed-seed
 #                 sample; ACCURACY_TARGETS=off: the *_no4ulps builds, see below)
 #   make report   bench/REPORT.md, bench/error_vs_time.png, docs/accuracy.md's table: accuracy,
 #                 time (median of BENCH_RUNS runs) and instructions per call (callgrind)
@@ -69,6 +69,9 @@ $(eval $(call BENCH_ACC_RUNNER,test_accuracy,))
 # ... for the float API computed in float (as on targets without a double FPU), and the double
 # API's CYL_PRECISE without v2's FMA copy (as on CPUs without the FMA) ...
 $(eval $(call BENCH_ACC_RUNNER,test_accuracy_narrow,-DCYL_FLOAT_WIDE=0 -DCYL_FMA_DISPATCH=0))
+# ... computed in float without the precise tier, as a float-only firmware builds it (v2: no
+# Newton steps on the exact path either; the precise targets skip) ...
+$(eval $(call BENCH_ACC_RUNNER,test_accuracy_noprec,-DCYL_FLOAT_WIDE=0 -DCYL_NO_PRECISE))
 # ... and with a hardware FMA (where this machine has FMA3).
 ifeq ($(HOST_FMA),1)
 $(eval $(call BENCH_ACC_RUNNER,test_accuracy_fma,-mfma))
