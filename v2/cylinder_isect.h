@@ -30,7 +30,7 @@
 
    int cylf_intersect(const cylf_ray*, const cylf_cylinder*, unsigned opts, cylf_hit *hit)
        The nearest hit with tmin <= t <= tmax: CYL_HIT and *hit filled, CYL_MISS, or a negative
-       CYL_E_* code; on a miss or an error *hit is not touched.
+       CYL_E_* code; on a miss or an error *hit is not touched. Outputs must not overlap inputs.
    int cylf_intersect_all(ray, cyl, opts, cylf_hit hits[2])
        Every hit in range, sorted by t (open tube: both wall crossings; capped solid: entry and
        exit): the count (0, 1, 2) or an error; hits[i >= count] untouched.
