@@ -14,7 +14,8 @@
 #   runners   CYL_NO_FLOAT, CYL_NO_DOUBLE, -DCYL_NO_PRECISE, user overrides (CYL_SQRTF/CYL_SQRT/
 #             CYL_FMAF/CYL_FMA/CYL_DEF and the tolerance macros), two translation units linked
 #             together (the last two also as C++11); the contract suite with CYL_FLOAT_WIDE=0,
-#             float-only (CYL_NO_DOUBLE), the double API with CYL_NO_PRECISE, with CYL_NO_FAST_PATH (not under V=2), with a hardware FMA (-mfma, where this
+#             float-only (CYL_NO_DOUBLE), the double API with CYL_NO_PRECISE, with
+#             CYL_NO_FAST_PATH (not under V=2), with a hardware FMA (-mfma, where this
 #             machine has one), built for size (-Os, V=2 only), and with every entry point forced inline
 #             (tests/config/cfg_forced_inline.h; not under V=2, where that is the default)
 #   prereq    -ffast-math must stop the build at the header's #error (gcc and clang)

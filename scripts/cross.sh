@@ -250,13 +250,15 @@ cmd_embedded() {
     if [ "$t" = m4f ] && [ "$mcu_noprec" -gt 0 ]; then
       smaller "$t" "$p" precise open "the whole call where CYL_PRECISE is compiled out (CYL_E_OPTION)"
       echo "info $t $p: rt_noprec $(size_of "$t" rt_noprec "$p") B, runtime $(size_of "$t" runtime "$p") B (CYL_NO_DOUBLE defines CYL_NO_PRECISE: the same)"
-    elif [ "$tp" = x86_64:d ] && [ "$major" -lt 2 ]; then
-      echo "info $t $p: open $(size_of "$t" open "$p") B (fast path + solver), precise $(size_of "$t" precise "$p") B (solver alone)"
     else
-      smaller "$t" "$p" open precise "the precise tier"
+      if [ "$tp" = x86_64:d ] && [ "$major" -lt 2 ]; then
+        echo "info $t $p: open $(size_of "$t" open "$p") B (fast path + solver), precise $(size_of "$t" precise "$p") B (solver alone)"
+      else
+        smaller "$t" "$p" open precise "the precise tier"
+      fi
+      smaller "$t" "$p" rt_noprec runtime "the precise tier (CYL_NO_PRECISE)"
     fi
     smaller "$t" "$p" open runtime "options not passed as constants"
-    [ "$t" = m4f ] && [ "$mcu_noprec" -gt 0 ] || smaller "$t" "$p" rt_noprec runtime "the precise tier (CYL_NO_PRECISE)"
     smaller "$t" "$p" nofast open "the fast path (CYL_NO_FAST_PATH)"
   done
 
