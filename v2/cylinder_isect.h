@@ -151,7 +151,7 @@
 #if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
 #define CYL__INL static inline __attribute__((always_inline))
 #define CYL__SCRATCH(f) 0
-#else /* the frame is in memory: the exact path reuses it (its stack, not another) */
+#else /* the frame in memory: the exact path fills it, its caller answers it (one frame, less stack) */
 #define CYL__INL static inline
 #define CYL__SCRATCH(f) (f)
 #endif
@@ -500,8 +500,7 @@ CYL__INL CYL__L CYL__P(amax)(const CYL__L x[3])
 /* x·2^k for any k, in steps of normal powers of two: only the last step can round. */
 static inline CYL__R CYL__P(scale)(CYL__R x, int k)
 {
-    CYL__UINT b;
-    CYL__R p;
+    CYL__UINT b; CYL__R p;
     for (; k > CYL__EBIAS; k -= CYL__EBIAS) x *= 2 / CYL__RMIN;         /* 2^EBIAS */
     for (; k < 1 - CYL__EBIAS; k += CYL__EBIAS - 1) x *= CYL__RMIN;     /* 2^(1 - EBIAS) */
     b = (CYL__UINT)(k + CYL__EBIAS) << (CYL__MANT - 1), CYL__B(memcpy)(&p, &b, sizeof p);
@@ -526,10 +525,8 @@ CYL__INL CYL__L CYL__P(dop)(CYL__L a, CYL__L b, CYL__L c, CYL__L d)
 { CYL__L w = c * d; return CYL__LFMA(a, b, -w) + CYL__LFMA(-c, d, w); }
 /* x × y with each component within 2u of itself (the exact path's: N1). */
 CYL__INL void CYL__P(cross_exact)(const CYL__L x[3], const CYL__L y[3], CYL__L z[3])
-{
-    z[0] = CYL__P(dop)(x[1], y[2], x[2], y[1]), z[1] = CYL__P(dop)(x[2], y[0], x[0], y[2]);
-    z[2] = CYL__P(dop)(x[0], y[1], x[1], y[0]);
-}
+{ z[0] = CYL__P(dop)(x[1], y[2], x[2], y[1]), z[1] = CYL__P(dop)(x[2], y[0], x[0], y[2]);
+  z[2] = CYL__P(dop)(x[0], y[1], x[1], y[0]); }
 
 /* ------------------------------------------------------------------ entry points */
 CYL__INL int CYL__P(answer)(const CYL__N(ray) *, const CYL__N(cylinder) *, const CYL__P(frame) *, unsigned, int, CYL__N(hit) *, int);
@@ -579,11 +576,14 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
 #endif
     if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u)
-        return CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
-    if (sizeof(CYL__L) > sizeof(CYL__R)) /* t representable in R: in the range (in_range) */
-        f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);
-    ok = CYL__P(answer)(ray, cyl, &f, opts, want, hits, 0);
-    return ok == CYL__DOUBT ? CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f)) : ok;
+        ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
+    else {
+        if (sizeof(CYL__L) > sizeof(CYL__R)) /* t representable in R: in the range (in_range) */
+            f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);
+        ok = CYL__P(answer)(ray, cyl, &f, opts, want, hits, 0);
+        if (ok == CYL__DOUBT) ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
+    }
+    return CYL__SCRATCH(1) && ok == CYL__DOUBT ? CYL__P(answer)(ray, cyl, &f, opts, want, hits, 1) : ok;
 }
 
 #ifdef CYL__HELPER /* the handoff's target: one out-of-line copy for every call site */
@@ -1075,7 +1075,7 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
 
 /* The exact path: validates, scales, answers on the same decisions; ratios out of range even
    scaled (double: r below 2^-300, h/2 below 2^-600 |o − c|) are answered raised, t_err = inf.
-   fs: the caller's frame to reuse (CYL__SCRATCH), else 0. */
+   fs: the caller's frame to fill, which the caller answers (CYL__SCRATCH; CYL__DOUBT), else 0. */
 CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                            int want, CYL__N(hit) *hits, CYL__P(frame) *fs)
 {
@@ -1089,7 +1089,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     }
     f->par = CYL__P(parallel)(f) <= 0;
     if ((CYL__SUPPORTED & CYL_PRECISE) && f->exact) CYL__X(exact_frame)(f); /* N8 */
-    return CYL__P(answer)(ray, cyl, f, opts, want, hits, 1);
+    return CYL__SCRATCH(1) ? CYL__DOUBT : CYL__P(answer)(ray, cyl, f, opts, want, hits, 1);
 }
 
 #ifndef CYL__HELPER
