@@ -159,6 +159,8 @@ MUTANTS_V2 = [
   "        (void)0;"),
  ("strerror off by one", "msg[code - CYL_E_OPTION];",
   "msg[code - CYL_E_OPTION + 1];"),
+ ("-O0/-Os: the exact path's frame left unanswered", "return CYL__SCRATCH(1) && ok == CYL__DOUBT ? CYL__P(answer)(ray, cyl, &f, opts, want, hits, 1) : ok;",
+  "return ok;"),
 ]
 
 
