@@ -477,8 +477,6 @@ static CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L 
 /* One crossing of the ray with the surface; h: ∓√(|a|²D) at a wall (entry −, exit +). */
 typedef struct CYL__P(cross) { CYL__L t, h; int part, ok, doubt; unsigned flags; } CYL__P(cross);
 
-static int CYL__P(cold)(const CYL__N(ray) *, const CYL__N(cylinder) *, unsigned, int, CYL__N(hit) *, CYL__P(frame) *);
-
 /* ------------------------------------------------------------------ small tools */
 CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return CYL__LABS(x); }
 CYL__INL CYL__L CYL__P(max)(CYL__L x, CYL__L y) { return x > y ? x : y; }
@@ -528,11 +526,7 @@ CYL__INL void CYL__P(cross_exact)(const CYL__L x[3], const CYL__L y[3], CYL__L z
 { z[0] = CYL__P(dop)(x[1], y[2], x[2], y[1]), z[1] = CYL__P(dop)(x[2], y[0], x[0], y[2]);
   z[2] = CYL__P(dop)(x[0], y[1], x[1], y[0]); }
 
-/* ------------------------------------------------------------------ entry points */
-CYL__INL int CYL__P(answer)(const CYL__N(ray) *, const CYL__N(cylinder) *, const CYL__P(frame) *, unsigned, int, CYL__N(hit) *, int);
-CYL__INL int CYL__P(derive)(CYL__P(frame) *f);
-CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f);
-
+/* ------------------------------------------------------------------ frame */
 /* The inputs in L: w = o − c, d, a, r, H = h/2 (written out: the frame stays in registers). */
 CYL__INL void CYL__P(load)(CYL__P(frame) *f, const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl)
 {
@@ -542,66 +536,7 @@ CYL__INL void CYL__P(load)(CYL__P(frame) *f, const CYL__N(ray) *ray, const CYL__
     f->a[0] = (CYL__L)cyl->a[0], f->a[1] = (CYL__L)cyl->a[1], f->a[2] = (CYL__L)cyl->a[2];
 }
 
-/* The hot path: the frame, one range test, the answer; what the test refuses (invalid, out of
-   range, near the axis direction, an unknown option) goes to the exact path. want: 0 occluded,
-   1 nearest, 2 all. */
-CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
-                         int want, CYL__N(hit) *hits)
-{
-    CYL__P(frame) f; /* filled without loops: gcc then keeps the frame in registers */
-    int ok;
-#ifdef CYL__HANDOFF
-    if ((opts & CYL_PRECISE) && CYL__HANDOFF_IF(want)) return CYL__HANDOFF(out)(ray, cyl, opts, want, hits);
-#endif
-#if defined(CYL__CVT2) && CYL__LD && !CYL__RD /* float inputs in pairs, as they lie in memory: */
-    { /* ray (o0, o1), (o2, d0), (d1, d2), (tmin, tmax), cylinder (c0, c1), (c2, a0), (a1, a2), (r, h) */
-        const unsigned char *p = (const unsigned char *)ray, *q = (const unsigned char *)cyl;
-        CYL__P(pair) o, od, dd, c, ca, aa, rh;
-        (void)sizeof(char[sizeof *ray == 32 && sizeof *cyl == 32 ? 1 : -1]); /* 8 floats each, packed */
-        CYL__CVT2(o, p); CYL__CVT2(od, p + 8); CYL__CVT2(dd, p + 16); CYL__CVT2(c, q);
-        CYL__CVT2(ca, q + 8); CYL__CVT2(aa, q + 16); CYL__CVT2(rh, q + 24); o -= c, c = od - ca;
-        f.w[0] = o[0], f.w[1] = o[1], f.w[2] = c[0], f.d[0] = od[1], f.d[1] = dd[0], f.d[2] = dd[1];
-        f.a[0] = ca[1], f.a[1] = aa[0], f.a[2] = aa[1], f.r = rh[0], f.H = rh[1] * CYL__K(0.5);
-    }
-#else
-    if (sizeof(CYL__L) > sizeof(CYL__R)) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); } /* here: the t range reads too */
-    CYL__P(load)(&f, ray, cyl);
-#endif
-    f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX), f.lo = CYL__HOT_LO;
-    f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
-    ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
-#if defined(CYL__CVT2) && CYL__LD && !CYL__RD
-    { CYL__P(pair) t; CYL__CVT2(t, (const unsigned char *)ray + 24); f.tmin = f.rmin = t[0], f.tmax = f.rmax = t[1]; }
-#else
-    f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
-#endif
-    if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u)
-        ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
-    else {
-        if (sizeof(CYL__L) > sizeof(CYL__R)) /* t representable in R: in the range (in_range) */
-            f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);
-        ok = CYL__P(answer)(ray, cyl, &f, opts, want, hits, 0);
-        if (ok == CYL__DOUBT) ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
-    }
-    return CYL__SCRATCH(1) && ok == CYL__DOUBT ? CYL__P(answer)(ray, cyl, &f, opts, want, hits, 1) : ok;
-}
-
-#ifdef CYL__HELPER /* the handoff's target: one out-of-line copy for every call site */
-CYL__OUT int CYL__P(out)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
-                         int want, CYL__N(hit) *hits)
-{ return CYL__P(run)(ray, cyl, opts, want, hits); }
-#else
-CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
-                              unsigned opts, CYL__N(hit) *hit)
-{ return !ray || !cyl || !hit ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 1, hit); }
-CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
-                                  unsigned opts, CYL__N(hit) hits[2])
-{ return !ray || !cyl || !hits ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 2, hits); }
-CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
-{ return !ray || !cyl ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 0, (CYL__N(hit) *)0); }
-#endif
-
-/* ------------------------------------------------------------------ frame */
+CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f);
 /* Everything the decisions use, from s = a × d and m = a × w (N1), and the range test (N2) on
    derived values: r|a|, r²|a|², |a|²|d|², Ha and (hot path) r²A and the steep margin at least lo;
    |a|²(|w|² + r²), |a|²|d|² and r²A (>= D) summed at most hi; Ha finite unless h is (always so
@@ -1091,6 +1026,66 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     if ((CYL__SUPPORTED & CYL_PRECISE) && f->exact) CYL__X(exact_frame)(f); /* N8 */
     return CYL__SCRATCH(1) ? CYL__DOUBT : CYL__P(answer)(ray, cyl, f, opts, want, hits, 1);
 }
+
+/* ------------------------------------------------------------------ entry points */
+/* The hot path: the frame, one range test, the answer; what the test refuses (invalid, out of
+   range, near the axis direction, an unknown option) goes to the exact path. want: 0 occluded,
+   1 nearest, 2 all. */
+CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                         int want, CYL__N(hit) *hits)
+{
+    CYL__P(frame) f; /* filled without loops: gcc then keeps the frame in registers */
+    int ok;
+#ifdef CYL__HANDOFF
+    if ((opts & CYL_PRECISE) && CYL__HANDOFF_IF(want)) return CYL__HANDOFF(out)(ray, cyl, opts, want, hits);
+#endif
+#if defined(CYL__CVT2) && CYL__LD && !CYL__RD /* float inputs in pairs, as they lie in memory: */
+    { /* ray (o0, o1), (o2, d0), (d1, d2), (tmin, tmax), cylinder (c0, c1), (c2, a0), (a1, a2), (r, h) */
+        const unsigned char *p = (const unsigned char *)ray, *q = (const unsigned char *)cyl;
+        CYL__P(pair) o, od, dd, c, ca, aa, rh;
+        (void)sizeof(char[sizeof *ray == 32 && sizeof *cyl == 32 ? 1 : -1]); /* 8 floats each, packed */
+        CYL__CVT2(o, p); CYL__CVT2(od, p + 8); CYL__CVT2(dd, p + 16); CYL__CVT2(c, q);
+        CYL__CVT2(ca, q + 8); CYL__CVT2(aa, q + 16); CYL__CVT2(rh, q + 24); o -= c, c = od - ca;
+        f.w[0] = o[0], f.w[1] = o[1], f.w[2] = c[0], f.d[0] = od[1], f.d[1] = dd[0], f.d[2] = dd[1];
+        f.a[0] = ca[1], f.a[1] = aa[0], f.a[2] = aa[1], f.r = rh[0], f.H = rh[1] * CYL__K(0.5);
+    }
+#else
+    if (sizeof(CYL__L) > sizeof(CYL__R)) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); } /* here: the t range reads too */
+    CYL__P(load)(&f, ray, cyl);
+#endif
+    f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX), f.lo = CYL__HOT_LO;
+    f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
+    ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
+#if defined(CYL__CVT2) && CYL__LD && !CYL__RD
+    { CYL__P(pair) t; CYL__CVT2(t, (const unsigned char *)ray + 24); f.tmin = f.rmin = t[0], f.tmax = f.rmax = t[1]; }
+#else
+    f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
+#endif
+    if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u)
+        ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
+    else {
+        if (sizeof(CYL__L) > sizeof(CYL__R)) /* t representable in R: in the range (in_range) */
+            f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);
+        ok = CYL__P(answer)(ray, cyl, &f, opts, want, hits, 0);
+        if (ok == CYL__DOUBT) ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
+    }
+    return CYL__SCRATCH(1) && ok == CYL__DOUBT ? CYL__P(answer)(ray, cyl, &f, opts, want, hits, 1) : ok;
+}
+
+#ifdef CYL__HELPER /* the handoff's target: one out-of-line copy for every call site */
+CYL__OUT int CYL__P(out)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
+                         int want, CYL__N(hit) *hits)
+{ return CYL__P(run)(ray, cyl, opts, want, hits); }
+#else
+CYL_DEF int CYL__N(intersect)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                              unsigned opts, CYL__N(hit) *hit)
+{ return !ray || !cyl || !hit ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 1, hit); }
+CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
+                                  unsigned opts, CYL__N(hit) hits[2])
+{ return !ray || !cyl || !hits ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 2, hits); }
+CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
+{ return !ray || !cyl ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 0, (CYL__N(hit) *)0); }
+#endif
 
 #ifndef CYL__HELPER
 /* The cylinder from p0 (its low cap center) to p1 (high cap center); |p1 − p0| with a
