@@ -141,6 +141,7 @@
 #error "cylinder_isect.h: CYL_NO_FAST_PATH and CYL_INTERNAL are gone in v2 (one path; internals follow CYL_DEF's call site): remove them"
 #endif
 #include <float.h>
+#include <stddef.h>
 #include <stdint.h>
 #if !defined(FLT_EVAL_METHOD) || !(FLT_EVAL_METHOD == 0 || FLT_EVAL_METHOD == 16 || FLT_EVAL_METHOD == 32)
 #error "cylinder_isect.h: needs FLT_EVAL_METHOD == 0 (no excess precision, e.g. x87); use SSE2, or -fexcess-precision=fast"
@@ -150,7 +151,7 @@
    (gcc keeps an entry point called from several places out of line otherwise; -O0 folds nothing). */
 #if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
 #define CYL__INL static inline __attribute__((always_inline))
-#define CYL__SCRATCH(f) 0
+#define CYL__SCRATCH(f) NULL
 #else /* the frame in memory: the exact path fills it, its caller answers it (one frame, less stack) */
 #define CYL__INL static inline
 #define CYL__SCRATCH(f) (f)
@@ -457,7 +458,7 @@ typedef struct CYL__N(cylinder) { CYL__R c[3], a[3], r, h; } CYL__N(cylinder);
 typedef struct CYL__N(hit) { CYL__R t, t_err, n[3], v; int part; unsigned flags; } CYL__N(hit);
 #endif
 #ifdef CYL__HANDOFF
-static int CYL__HANDOFF(out)(const CYL__N(ray) *, const CYL__N(cylinder) *, unsigned, int, CYL__N(hit) *);
+static int CYL__HANDOFF(out)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts, int want, CYL__N(hit) *hits);
 #endif
 
 /* The frame (N1): the inputs in L, scaled on the exact path (t, v there 2^et, 2^ev times the
@@ -508,10 +509,11 @@ static inline CYL__R CYL__P(scale)(CYL__R x, int k)
 /* floor(log2(x)) for finite x > 0 in R, from the exponent bits (subnormals included). */
 static inline int CYL__P(expo)(CYL__R x)
 {
-    CYL__UINT b;
-    int e = (CYL__B(memcpy)(&b, &x, sizeof b), (int)((b >> (CYL__MANT - 1)) & (CYL__UINT)(2 * CYL__EBIAS + 1)));
-    if (e || !(x > 0)) return e - CYL__EBIAS;
-    return CYL__P(expo)(x * CYL__P(scale)(1, CYL__MANT)) - CYL__MANT; /* a subnormal */
+    const CYL__UINT m = (CYL__UINT)(2 * CYL__EBIAS + 1) << (CYL__MANT - 1); /* the exponent bits */
+    CYL__UINT b; int s = 0;
+    if ((CYL__B(memcpy)(&b, &x, sizeof b), (b & m) == 0u) && x > 0) /* a subnormal */
+        x *= CYL__P(scale)(1, CYL__MANT), s = CYL__MANT, CYL__B(memcpy)(&b, &x, sizeof b);
+    return (int)((b & m) >> (CYL__MANT - 1)) - CYL__EBIAS - s;
 }
 
 /* The neighbour of x toward zero in R (x finite, nonzero). */
@@ -573,10 +575,10 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     lo = CYL__P(min)(CYL__P(min)(f->r * f->sqaa, f->r2aa), CYL__P(min)(f->ad, f->Ha));
     /* the hot path's margin for the exact path: parallel rays and, unless L makes the inputs'
        products exact, those whose s or m loses 8 bits (N6): d or o − c within 2^-8 of the axis */
-    if (!f->cold) lo = CYL__P(min)(CYL__P(min)(sizeof(CYL__L) > sizeof(CYL__R) ? CYL__P(parallel)(f) :
+    if (!f->cold) lo = CYL__P(min)(CYL__P(min)((CYL__LD && !CYL__RD) ? CYL__P(parallel)(f) :
         CYL__P(min)(65536 * f->A - f->ad, 65536 * f->mm - f->aww), f->r2 * f->A), lo);
     return lo >= f->lo && f->aww + f->r2aa + f->ad + f->r2 * f->A <= CYL__HOT_HI &&
-           (sizeof(CYL__L) > sizeof(CYL__R) || !(f->Ha - f->H > CYL__LMAX)); /* a wider L: Ha < 2^256 */
+           ((CYL__LD && !CYL__RD) || !(f->Ha - f->H > CYL__LMAX)); /* a wider L: Ha < 2^256 */
 }
 
 /* ------------------------------------------------------------------ decisions */
@@ -667,9 +669,10 @@ CYL__INL int CYL__P(first_order)(const CYL__P(frame) *f, CYL__L e, CYL__L h) { r
    on their rounding: (|F| + EF)/(|G| − EG) on the near branch, else the product-of-roots one. */
 CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x)
 {
-    const CYL__L u = CYL__LU, h = CYL__P(abs)(x->h);
+    const CYL__L u = CYL__LU;
     CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb, nd;
-    if (sizeof(CYL__L) > sizeof(CYL__R) && !f->cold) {
+    if (CYL__LD && !CYL__RD && !f->cold) {
+        const CYL__L h = CYL__P(abs)(x->h);
         Gb = CYL__P(root_bound)(f, x->t, h); /* first order, and 2^-7 of R's ulp of t */
         if (CYL__P(first_order)(f, Gb, h) && Gb <= CYL__P(abs)(x->t) * ((CYL__L)CYL__IFR(DBL_EPSILON, FLT_EPSILON) / 128))
             return Gb;
@@ -707,7 +710,7 @@ CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl
 {
     CYL__L as[3], a[3], g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 : 1, h = x->h, P = f->P, q;
     /* a: the hot path in R's type reads it again from the caller, as operands (the frame's spills) */
-    if (f->cold || sizeof(CYL__L) > sizeof(CYL__R)) CYL__P(mul3)(1, f->a, a);
+    if (f->cold || (CYL__LD && !CYL__RD)) CYL__P(mul3)(1, f->a, a);
     else { CYL__LAUNDER(cyl); a[0] = (CYL__L)cyl->a[0], a[1] = (CYL__L)cyl->a[1], a[2] = (CYL__L)cyl->a[2]; }
     if (!side) { CYL__P(mul3)(x->part == CYL_CAP_HIGH ? g / f->sqaa : -g / f->sqaa, a, n); return; }
     if (f->cold && (q = CYL__P(max)(CYL__P(abs)(P), CYL__P(abs)(h) / f->sqaa)) > 0)
@@ -742,14 +745,14 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl, 
         v = CYL__P(max)(-f->vlim, CYL__P(min)(CYL__LT(scale)(v, f->ev), f->vlim));
     }
     tr = (CYL__R)t, vr = (CYL__R)v, er = (CYL__R)err;
-    if (sizeof(CYL__L) > sizeof(CYL__R)) {
+    if (CYL__LD && !CYL__RD) {
         CYL__OPAQUE(tr);
         if (!(opts & CYL_NO_ERRBOUND)) /* t's rounding to R joins the bound, rounded up in R */
             er = (CYL__R)(err + CYL__P(abs)((CYL__L)tr - t)), /* (beyond R's range: inf) */
             er = er * (1 + 2 * (CYL__R)CYL__IFR(DBL_EPSILON, FLT_EPSILON)) + (CYL__R)1.40129846432481707e-45;
         if (CYL__P(abs)((CYL__L)vr) > f->vlim) vr = CYL__P(toward0)(vr);
     }
-    hit->t = tr, hit->t_err = er, hit->v = vr;
+    hit->t = tr, hit->t_err = er, hit->v = vr; /* cppcheck-suppress ctunullpointer ; occluded's NULL: no emit */
     hit->n[0] = (CYL__R)n[0], hit->n[1] = (CYL__R)n[1], hit->n[2] = (CYL__R)n[2];
     hit->part = x->part, hit->flags = x->flags;
 }
@@ -781,7 +784,7 @@ CYL__OUT CYL__L CYL__P(polish_hot)(const CYL__N(ray) *ray, const CYL__N(cylinder
     int i;
     CYL__UNROLL for (CYL__P(load)(&f, ray, cyl), i = 0; i < 3; i++) /* w exact as w + wl */
         f.wl[i] = CYL__P(sum_err)((CYL__L)ray->o[i], -(CYL__L)cyl->c[i], f.w[i]);
-    return CYL__P(cross3)(f.a, f.d, f.s), CYL__X(polish)(&f, t, part, gap, 0);
+    return CYL__P(cross3)(f.a, f.d, f.s), CYL__X(polish)(&f, t, part, gap, NULL);
 }
 
 /* The crossings in t order; occluded and intersect stop at the first, and nothing is emitted
@@ -790,7 +793,7 @@ CYL__OUT CYL__L CYL__P(polish_hot)(const CYL__N(ray) *ray, const CYL__N(cylinder
 CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, const CYL__P(frame) *f,
                             unsigned opts, int want, CYL__N(hit) *hits, int compact)
 {
-    CYL__L v[4], sq = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : 0, l[4] = {0, 0, 0, 0};
+    CYL__L v[4], sq = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : NULL, l[4] = {0, 0, 0, 0};
     CYL__P(cross) x, y;
     int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0, pol, alone;
     unsigned tan = kind == 1 ? CYL_F_TANGENT : 0u;
@@ -798,9 +801,9 @@ CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     if (kind == 0 || (tan && (opts & CYL_NO_TANGENT))) return 0;
     if (!f->par) sq = CYL__P(wall_roots)(f, v);
     else v[0] = -CYL__LINF, v[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
-    CYL__P(slab)(f, v + 2);
-    if ((CYL__SUPPORTED & CYL_PRECISE) && f->cold && f->exact) CYL__X(refine)(f, v, opts & CYL_PRECISE ? l : 0); /* N8 */
-    pol = e && sizeof(CYL__L) == sizeof(CYL__R) && want; /* the double API's t to an ulp */
+    CYL__P(slab)(f, &v[2]);
+    if ((CYL__SUPPORTED & CYL_PRECISE) && f->cold && f->exact) CYL__X(refine)(f, v, opts & CYL_PRECISE ? l : NULL); /* N8 */
+    pol = e && !(CYL__LD && !CYL__RD) && want; /* the double API's t to an ulp */
     if (e && CYL__P(bounds)(f, v, sq, e)) return CYL__DOUBT;
     x = CYL__P(crossing)(f, opts, 0, v, e, l, sq, tan), alone = x.ok && want < 2; /* entry, then exit: no loop, so */
     if (e) { /* both certain, whatever the entry point: */ /* that k and the arrays fold away */
@@ -947,15 +950,15 @@ CYL__OUT CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__
    low parts, for the rim to compare the pairs. */
 CYL__COLD void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l)
 {
-    CYL__L lo = CYL__P(polish)(f, v[2], CYL__CAP_PART(f, 0), 0, l ? &l[2] : 0);
-    CYL__L hi = CYL__P(polish)(f, v[3], CYL__CAP_PART(f, 1), 0, l ? &l[3] : 0);
+    CYL__L lo = CYL__P(polish)(f, v[2], CYL__CAP_PART(f, 0), 0, l ? &l[2] : NULL);
+    CYL__L hi = CYL__P(polish)(f, v[3], CYL__CAP_PART(f, 1), 0, l ? &l[3] : NULL);
     CYL__L gap = f->D > 0 ? CYL__LSQRT(f->aa * f->D) / f->A : 0; /* half the roots' distance */
     if (lo <= hi) v[2] = lo, v[3] = hi;
     else if (l) l[2] = l[3] = 0;
     if (f->par) return;
     v[0] = v[1] = f->tc; /* a contact without roots stays there */
-    if (gap > 0) v[0] = CYL__P(polish)(f, v[0] - gap, CYL_SIDE, gap, l ? &l[0] : 0),
-                 v[1] = CYL__P(polish)(f, v[1] + gap, CYL_SIDE, gap, l ? &l[1] : 0);
+    if (gap > 0) v[0] = CYL__P(polish)(f, v[0] - gap, CYL_SIDE, gap, l ? &l[0] : NULL),
+                 v[1] = CYL__P(polish)(f, v[1] + gap, CYL_SIDE, gap, l ? &l[1] : NULL);
 }
 #endif /* CYL__XOWN */
 
@@ -964,7 +967,7 @@ static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder
 {
     const CYL__R *v[4] = {ray->o, ray->d, cyl->c, cyl->a};
     unsigned i, k, nonzero = 0; /* bit k: v[k] has a nonzero component (an int[4]'s initializer calls memcpy on RV32) */
-    if (opts & CYL_TRUSTED) return opts & ~CYL__SUPPORTED ? CYL_E_OPTION : 0;
+    if (opts & CYL_TRUSTED) return (opts & ~CYL__SUPPORTED) != 0u ? CYL_E_OPTION : 0;
     for (k = 0; k < 4; k++)
         for (i = 0; i < 3; i++) {
             if (!(v[k][i] >= -CYL__RMAX && v[k][i] <= CYL__RMAX)) return CYL_E_NONFINITE;
@@ -974,7 +977,7 @@ static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder
     if (!(cyl->r > 0) || !(cyl->r <= CYL__RMAX)) return CYL_E_RADIUS;
     if (!(cyl->h > 0)) return CYL_E_HEIGHT;
     if (!(ray->tmin <= ray->tmax)) return CYL_E_TRANGE;
-    return opts & ~CYL__SUPPORTED ? CYL_E_OPTION : 0;
+    return (opts & ~CYL__SUPPORTED) != 0u ? CYL_E_OPTION : 0;
 }
 
 /* The frame of valid input scaled into the range (N2): lengths by 2^-kl, d by 2^-kd, a by
@@ -1003,7 +1006,7 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     f->tmin = CYL__P(max)(CYL__LT(scale)((CYL__L)ray->tmin, -f->et), -m), f->rmin = (CYL__L)ray->tmin;
     f->tmax = CYL__P(min)(CYL__LT(scale)((CYL__L)ray->tmax, -f->et), m), f->rmax = (CYL__L)ray->tmax;
     f->vlim = CYL__P(min)((CYL__L)cyl->h * CYL__K(0.5), (CYL__L)CYL__RMAX);
-    if (sizeof(CYL__L) == sizeof(CYL__R) && f->vlim * 2 > (CYL__L)cyl->h) /* h/2 rounded up */
+    if (!(CYL__LD && !CYL__RD) && f->vlim * 2 > (CYL__L)cyl->h) /* h/2 rounded up */
         f->vlim = (CYL__L)CYL__P(toward0)((CYL__R)f->vlim);
     f->lo = CYL__COLD_LO, f->cold = f->exact = 1;
 }
@@ -1014,7 +1017,7 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
 CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                            int want, CYL__N(hit) *hits, CYL__P(frame) *fs)
 {
-    CYL__P(frame) own, *f = fs ? fs : &own;
+    CYL__P(frame) own, *f = fs ? fs : &own; /* cppcheck-suppress uninitvar ; load_scaled fills it */
     int rc = CYL__P(validate)(ray, cyl, opts);
     if (rc) return rc;
     CYL__P(load_scaled)(f, ray, cyl);
@@ -1050,7 +1053,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
         f.a[0] = ca[1], f.a[1] = aa[0], f.a[2] = aa[1], f.r = rh[0], f.H = rh[1] * CYL__K(0.5);
     }
 #else
-    if (sizeof(CYL__L) > sizeof(CYL__R)) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); } /* here: the t range reads too */
+    if (CYL__LD && !CYL__RD) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); } /* here: the t range reads too */
     CYL__P(load)(&f, ray, cyl);
 #endif
     f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX), f.lo = CYL__HOT_LO;
@@ -1064,7 +1067,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u)
         ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
     else {
-        if (sizeof(CYL__L) > sizeof(CYL__R)) /* t representable in R: in the range (in_range) */
+        if (CYL__LD && !CYL__RD) /* t representable in R: in the range (in_range) */
             f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);
         ok = CYL__P(answer)(ray, cyl, &f, opts, want, hits, 0);
         if (ok == CYL__DOUBT) ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
@@ -1084,7 +1087,7 @@ CYL_DEF int CYL__N(intersect_all)(const CYL__N(ray) *ray, const CYL__N(cylinder)
                                   unsigned opts, CYL__N(hit) hits[2])
 { return !ray || !cyl || !hits ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 2, hits); }
 CYL_DEF int CYL__N(occluded)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts)
-{ return !ray || !cyl ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 0, (CYL__N(hit) *)0); }
+{ return !ray || !cyl ? CYL_E_NULL : CYL__P(run)(ray, cyl, opts, 0, NULL); }
 #endif
 
 #ifndef CYL__HELPER
