@@ -152,9 +152,11 @@
 #if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
 #define CYL__INL static inline __attribute__((always_inline))
 #define CYL__SCRATCH(f) NULL
+#define CYL__UNROLL8 CYL__UNROLL
 #else /* the frame in memory: the exact path fills it, its caller answers it (one frame, less stack) */
 #define CYL__INL static inline
 #define CYL__SCRATCH(f) (f)
+#define CYL__UNROLL8 /* N8's loops rolled for size; the frame's unrolled (its pairs then leave the stack) */
 #endif
 #ifndef CYL_DEF
 #define CYL_DEF CYL__INL
@@ -242,7 +244,7 @@ typedef struct cyl__float2 { float v[2]; } cyl__float2;
 #define CYL__B(f) f
 #define CYL__LAUNDER(p) (void)0
 #endif
-#if (defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 8)) && !defined(__OPTIMIZE_SIZE__) /* -O2 keeps 3-trip loops */
+#if defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 8) /* gcc -O2 keeps 3-trip loops */
 #define CYL__UNROLL _Pragma("GCC unroll 3")
 #else
 #define CYL__UNROLL
@@ -782,7 +784,7 @@ CYL__OUT CYL__L CYL__P(polish_hot)(const CYL__N(ray) *ray, const CYL__N(cylinder
 {
     CYL__P(frame) f;
     int i;
-    CYL__UNROLL for (CYL__P(load)(&f, ray, cyl), i = 0; i < 3; i++) /* w exact as w + wl */
+    CYL__UNROLL8 for (CYL__P(load)(&f, ray, cyl), i = 0; i < 3; i++) /* w exact as w + wl */
         f.wl[i] = CYL__P(sum_err)((CYL__L)ray->o[i], -(CYL__L)cyl->c[i], f.w[i]);
     return CYL__P(cross3)(f.a, f.d, f.s), CYL__X(polish)(&f, t, part, gap, NULL);
 }
@@ -880,11 +882,11 @@ CYL__OUT CYL__L CYL__P(resid)(const CYL__P(frame) *f, const CYL__L ra[3], CYL__L
     CYL__P(acc) q, F;
     int i;
     F.s = ra[0], F.c = ra[1] - ra[2];
-    CYL__UNROLL for (i = 0; i < 3; i++) { /* x = w + t·d as pairs xh + xl (w exact as w + wl) */
+    CYL__UNROLL8 for (i = 0; i < 3; i++) { /* x = w + t·d as pairs xh + xl (w exact as w + wl) */
         q.s = f->w[i], q.c = f->wl[i], CYL__P(acc_mul)(&q, t, f->d[i]);
         xh[i] = CYL__P(acc_pair)(&q, &xl[i]);
     }
-    CYL__UNROLL for (i = 0; i < 3; i++) { /* y = a × x, componentwise as a pair, into |y|² */
+    CYL__UNROLL8 for (i = 0; i < 3; i++) { /* y = a × x, componentwise as a pair, into |y|² */
         const int i1 = i == 2 ? 0 : i + 1, i2 = i == 0 ? 2 : i - 1;
         q = CYL__P(acc_prod)(f->a[i1], xh[i2]), CYL__P(acc_mul)(&q, -f->a[i2], xh[i1]);
         q.c += f->a[i1] * xl[i2] - f->a[i2] * xl[i1];
