@@ -1015,7 +1015,7 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
 
 /* The exact path: validates, scales, answers on the same decisions; ratios out of range even
    scaled (double: r below 2^-300, h/2 below 2^-600 |o − c|) are answered raised, t_err = inf.
-   fs: the caller's frame to fill, which the caller answers (CYL__SCRATCH; CYL__DOUBT), else 0. */
+   fs: the caller's frame to fill, which the caller answers (CYL__SCRATCH; CYL__DOUBT), else NULL. */
 CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                            int want, CYL__N(hit) *hits, CYL__P(frame) *fs)
 {
