@@ -554,7 +554,7 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     if (f->cold) { /* s, m to 2u each; w = w + wl exactly there */
         CYL__P(cross_exact)(f->a, f->d, f->s), CYL__P(cross_exact)(f->a, f->w, f->m);
         CYL__P(cross3)(f->a, f->wl, ml), CYL__P(lin)(1, f->m, 1, ml, f->m);
-        for (i = 0; i < 3; i++) sm[i] = CYL__P(pr)(f->s[i], f->m[i]);
+        CYL__UNROLL for (i = 0; i < 3; i++) sm[i] = CYL__P(pr)(f->s[i], f->m[i]);
     } else { /* both cross products at once */
         CYL__EACH(CYL__V(sm[0]) = f->a[1] * CYL__V(dw[2]) - f->a[2] * CYL__V(dw[1]));
         CYL__EACH(CYL__V(sm[1]) = f->a[2] * CYL__V(dw[0]) - f->a[0] * CYL__V(dw[2]));
