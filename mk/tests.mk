@@ -119,8 +119,9 @@ $(TESTS_CFG_DIR)/portable_other.o: tests/config/cfg_dispatch_other.c $(TESTS_CFG
 	tcc -std=c99 -Wall -Werror -DFLT_EVAL_METHOD=0 -I$(V2_ABS) -Itests/config -c $< -o $@
 $(eval $(call TESTS_CFG_RUNNER,portable,tests/config/cfg_dispatch_main.c bench/cases.c $(TESTS_CFG_DIR)/portable_other.o,-Ibench -O2 -std=gnu99 -DCFG_PORTABLE -z noexecstack,c))
 # Built for size (-Os, what a firmware uses; the last -O wins): the entry points are then not
-# forced inline, and the exact path reuses the caller's frame (CYL__SCRATCH). (v1's
-# test_float does not build at -Os with -Werror: gcc 12's -Wstringop-overflow in its order2.)
+# forced inline, and the exact path fills the caller's frame, which the caller answers
+# (CYL__HANDBACK). (v1's test_float does not build at -Os with -Werror: gcc 12's
+# -Wstringop-overflow in its order2.)
 $(eval $(call TESTS_CFG_RUNNER,size_float,tests/test_float.c,-Os,c))
 $(eval $(call TESTS_CFG_RUNNER,size_double,tests/test_double.c,-Os,c))
 $(eval $(call TESTS_CFG_RUNNER,size_float_narrow,tests/test_float.c,-Os -DCYL_FLOAT_WIDE=0,c))

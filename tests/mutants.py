@@ -84,8 +84,8 @@ MUTANTS_V2 = [
  ("OUTWARD ignored", "g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 : 1,", "g = (x->flags & CYL_F_INSIDE) ? -1 : 1,"),
  ("never facing", "g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 : 1,", "g = 1,"),
  ("cap normal flipped", "x->part == CYL_CAP_HIGH ? g / f->sqaa : -g / f->sqaa", "x->part == CYL_CAP_HIGH ? -g / f->sqaa : g / f->sqaa"),
- ("normal: the caller's a on the exact path", "if (f->cold || (CYL__LD && !CYL__RD)) CYL__P(mul3)(1, f->a, a);",
-  "if (CYL__LD && !CYL__RD) CYL__P(mul3)(1, f->a, a);"),
+ ("normal: the caller's a on the exact path", "if (f->cold || CYL__WIDE) CYL__P(mul3)(1, f->a, a);",
+  "if (CYL__WIDE) CYL__P(mul3)(1, f->a, a);"),
  ("normal: a's components mixed", "a[0] = (CYL__L)cyl->a[0], a[1] = (CYL__L)cyl->a[1]", "a[0] = (CYL__L)cyl->a[1], a[1] = (CYL__L)cyl->a[0]"),
  ("wall normal h sign", "CYL__P(lin)(P * q, f->s, -h / f->aa * q, as, n);", "CYL__P(lin)(P * q, f->s, h / f->aa * q, as, n);"),
  ("wall v unclamped +2 ulps", "return CYL__P(max)(-f->H, CYL__P(min)(v, f->H)); }", "return v * (1 + 4 * CYL__LU); }"),
@@ -159,7 +159,7 @@ MUTANTS_V2 = [
   "        (void)0;"),
  ("strerror off by one", "msg[code - CYL_E_OPTION];",
   "msg[code - CYL_E_OPTION + 1];"),
- ("-O0/-Os: the exact path's frame left unanswered", "return CYL__SCRATCH(1) && ok == CYL__DOUBT ? CYL__P(answer)(ray, cyl, &f, opts, want, hits, 1) : ok;",
+ ("-O0/-Os: the exact path's frame left unanswered", "return CYL__HANDBACK && ok == CYL__DOUBT ? CYL__P(answer)(ray, cyl, &f, opts, want, hits, 1) : ok;",
   "return ok;"),
 ]
 

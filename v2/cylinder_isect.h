@@ -151,11 +151,11 @@
    (gcc keeps an entry point called from several places out of line otherwise; -O0 folds nothing). */
 #if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
 #define CYL__INL static inline __attribute__((always_inline))
-#define CYL__SCRATCH(f) NULL
+#define CYL__HANDBACK 0
 #define CYL__UNROLL8 CYL__UNROLL
 #else /* the frame in memory: the exact path fills it, its caller answers it (one frame, less stack) */
 #define CYL__INL static inline
-#define CYL__SCRATCH(f) (f)
+#define CYL__HANDBACK 1
 #define CYL__UNROLL8 /* N8's loops rolled for size; the frame's unrolled (its pairs then leave the stack) */
 #endif
 #ifndef CYL_DEF
@@ -351,6 +351,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__TANG CYL__IFR(CYL_TANGENT_TOL, CYL_TANGENT_TOLF)
 #define CYL__PARA CYL__IFR(CYL_PARALLEL_TOL, CYL_PARALLEL_TOLF)
 #define CYL__L CYL__IFL(double, float)
+#define CYL__WIDE (CYL__LD && !CYL__RD) /* L wider than R: the float API computed in double */
 #define CYL__LT(x) CYL__IFL(cyl__d_##x, cyl__f_##x)
 #define CYL__K(x) CYL__IFL(x, x##f)
 #define CYL__LMAX CYL__IFL(DBL_MAX, FLT_MAX)
@@ -364,6 +365,12 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__HOT_HI CYL__IFL(2.9073548971824276e135, 1.15292150e18f) /* 2^450, 2^60 */
 #define CYL__COLD_LO CYL__IFL(2.4099198651028841e-181, 1.32348898e-23f) /* scaled r²|a|²: 2^-600, 2^-76 */
 #define CYL__LINF (CYL__LMAX * 2)
+/* The certified layer runs (N9): CYL_PRECISE asked for and compiled in (it folds away
+   without, opts constant or not); what answer returns when it is not sure. */
+#define CYL__CERT(f, opts) (((opts) & CYL__SUPPORTED & CYL_PRECISE) && !(f)->cold)
+#define CYL__DOUBT (-100)
+/* Which cap plane slab end k lies on (a macro: gcc 12 folded the inline function less well). */
+#define CYL__CAP_PART(f, k) (((k) == 0) == !((f)->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH)
 
 /* One body per API, parameters (#undef'd by it): CYL__P its private names, CYL__RD 1 if its type
    R is double, CYL__LD 1 if its working type L is. A helper body (CYL__HELPER, N9): an API's in
@@ -438,21 +445,15 @@ CYL_DEF const char *cyl_strerror(int code)
 
 /* CYL__X: the names of the exact path (N8), the frame type's and its functions', which depend on L
    alone: the float API computed in double shares the double API's (with the FMA: its helper's). */
-#if CYL__LD && !CYL__RD && defined(CYL__LFASTFMA)
+#if CYL__WIDE && defined(CYL__LFASTFMA)
 #define CYL__X(x) cyl__dx_##x
-#elif CYL__LD && !CYL__RD
+#elif CYL__WIDE
 #define CYL__X(x) cyl__d_##x
 #else
 #define CYL__X(x) CYL__P(x)
 #define CYL__XOWN
 #endif
 
-/* The certified layer runs (N9): CYL_PRECISE asked for and compiled in (it folds away
-   without, opts constant or not); what answer returns when it is not sure. */
-#define CYL__CERT(f, opts) (((opts) & CYL__SUPPORTED & CYL_PRECISE) && !(f)->cold)
-#define CYL__DOUBT (-100)
-/* Which cap plane slab end k lies on (a macro: gcc 12 folded the inline function less well). */
-#define CYL__CAP_PART(f, k) (((k) == 0) == !((f)->zeta < 0) ? CYL_CAP_LOW : CYL_CAP_HIGH)
 
 #ifndef CYL__HELPER /* the public types (a helper body has its API's already) */
 typedef struct CYL__N(ray) { CYL__R o[3], d[3], tmin, tmax; } CYL__N(ray);
@@ -577,10 +578,10 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     lo = CYL__P(min)(CYL__P(min)(f->r * f->sqaa, f->r2aa), CYL__P(min)(f->ad, f->Ha));
     /* the hot path's margin for the exact path: parallel rays and, unless L makes the inputs'
        products exact, those whose s or m loses 8 bits (N6): d or o − c within 2^-8 of the axis */
-    if (!f->cold) lo = CYL__P(min)(CYL__P(min)((CYL__LD && !CYL__RD) ? CYL__P(parallel)(f) :
+    if (!f->cold) lo = CYL__P(min)(CYL__P(min)(CYL__WIDE ? CYL__P(parallel)(f) :
         CYL__P(min)(65536 * f->A - f->ad, 65536 * f->mm - f->aww), f->r2 * f->A), lo);
     return lo >= f->lo && f->aww + f->r2aa + f->ad + f->r2 * f->A <= CYL__HOT_HI &&
-           ((CYL__LD && !CYL__RD) || !(f->Ha - f->H > CYL__LMAX)); /* a wider L: Ha < 2^256 */
+           (CYL__WIDE || !(f->Ha - f->H > CYL__LMAX)); /* a wider L: Ha < 2^256 */
 }
 
 /* ------------------------------------------------------------------ decisions */
@@ -673,7 +674,7 @@ CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *
 {
     const CYL__L u = CYL__LU;
     CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb, nd;
-    if (CYL__LD && !CYL__RD && !f->cold) {
+    if (CYL__WIDE && !f->cold) {
         const CYL__L h = CYL__P(abs)(x->h);
         Gb = CYL__P(root_bound)(f, x->t, h); /* first order, and 2^-7 of R's ulp of t */
         if (CYL__P(first_order)(f, Gb, h) && Gb <= CYL__P(abs)(x->t) * ((CYL__L)CYL__IFR(DBL_EPSILON, FLT_EPSILON) / 128))
@@ -712,7 +713,7 @@ CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl
 {
     CYL__L as[3], a[3], g = (!(opts & CYL_OUTWARD) && (x->flags & CYL_F_INSIDE)) ? -1 : 1, h = x->h, P = f->P, q;
     /* a: the hot path in R's type reads it again from the caller, as operands (the frame's spills) */
-    if (f->cold || (CYL__LD && !CYL__RD)) CYL__P(mul3)(1, f->a, a);
+    if (f->cold || CYL__WIDE) CYL__P(mul3)(1, f->a, a);
     else { CYL__LAUNDER(cyl); a[0] = (CYL__L)cyl->a[0], a[1] = (CYL__L)cyl->a[1], a[2] = (CYL__L)cyl->a[2]; }
     if (!side) { CYL__P(mul3)(x->part == CYL_CAP_HIGH ? g / f->sqaa : -g / f->sqaa, a, n); return; }
     if (f->cold && (q = CYL__P(max)(CYL__P(abs)(P), CYL__P(abs)(h) / f->sqaa)) > 0)
@@ -747,7 +748,7 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl, 
         v = CYL__P(max)(-f->vlim, CYL__P(min)(CYL__LT(scale)(v, f->ev), f->vlim));
     }
     tr = (CYL__R)t, vr = (CYL__R)v, er = (CYL__R)err;
-    if (CYL__LD && !CYL__RD) {
+    if (CYL__WIDE) {
         CYL__OPAQUE(tr);
         if (!(opts & CYL_NO_ERRBOUND)) /* t's rounding to R joins the bound, rounded up in R */
             er = (CYL__R)(err + CYL__P(abs)((CYL__L)tr - t)), /* (beyond R's range: inf) */
@@ -805,7 +806,7 @@ CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
     else v[0] = -CYL__LINF, v[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
     CYL__P(slab)(f, &v[2]);
     if ((CYL__SUPPORTED & CYL_PRECISE) && f->cold && f->exact) CYL__X(refine)(f, v, opts & CYL_PRECISE ? l : NULL); /* N8 */
-    pol = e && !(CYL__LD && !CYL__RD) && want; /* the double API's t to an ulp */
+    pol = e && !CYL__WIDE && want; /* the double API's t to an ulp */
     if (e && CYL__P(bounds)(f, v, sq, e)) return CYL__DOUBT;
     x = CYL__P(crossing)(f, opts, 0, v, e, l, sq, tan), alone = x.ok && want < 2; /* entry, then exit: no loop, so */
     if (e) { /* both certain, whatever the entry point: */ /* that k and the arrays fold away */
@@ -1008,14 +1009,14 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     f->tmin = CYL__P(max)(CYL__LT(scale)((CYL__L)ray->tmin, -f->et), -m), f->rmin = (CYL__L)ray->tmin;
     f->tmax = CYL__P(min)(CYL__LT(scale)((CYL__L)ray->tmax, -f->et), m), f->rmax = (CYL__L)ray->tmax;
     f->vlim = CYL__P(min)((CYL__L)cyl->h * CYL__K(0.5), (CYL__L)CYL__RMAX);
-    if (!(CYL__LD && !CYL__RD) && f->vlim * 2 > (CYL__L)cyl->h) /* h/2 rounded up */
+    if (!CYL__WIDE && f->vlim * 2 > (CYL__L)cyl->h) /* h/2 rounded up */
         f->vlim = (CYL__L)CYL__P(toward0)((CYL__R)f->vlim);
     f->lo = CYL__COLD_LO, f->cold = f->exact = 1;
 }
 
 /* The exact path: validates, scales, answers on the same decisions; ratios out of range even
    scaled (double: r below 2^-300, h/2 below 2^-600 |o − c|) are answered raised, t_err = inf.
-   fs: the caller's frame to fill, which the caller answers (CYL__SCRATCH; CYL__DOUBT), else NULL. */
+   fs: the caller's frame to fill, which the caller answers (CYL__HANDBACK; CYL__DOUBT), else NULL. */
 CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                            int want, CYL__N(hit) *hits, CYL__P(frame) *fs)
 {
@@ -1029,7 +1030,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     }
     f->par = CYL__P(parallel)(f) <= 0;
     if ((CYL__SUPPORTED & CYL_PRECISE) && f->exact) CYL__X(exact_frame)(f); /* N8 */
-    return CYL__SCRATCH(1) ? CYL__DOUBT : CYL__P(answer)(ray, cyl, f, opts, want, hits, 1);
+    return CYL__HANDBACK ? CYL__DOUBT : CYL__P(answer)(ray, cyl, f, opts, want, hits, 1);
 }
 
 /* ------------------------------------------------------------------ entry points */
@@ -1044,7 +1045,7 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
 #ifdef CYL__HANDOFF
     if ((opts & CYL_PRECISE) && CYL__HANDOFF_IF(want)) return CYL__HANDOFF(out)(ray, cyl, opts, want, hits);
 #endif
-#if defined(CYL__CVT2) && CYL__LD && !CYL__RD /* float inputs in pairs, as they lie in memory: */
+#if defined(CYL__CVT2) && CYL__WIDE /* float inputs in pairs, as they lie in memory: */
     { /* ray (o0, o1), (o2, d0), (d1, d2), (tmin, tmax), cylinder (c0, c1), (c2, a0), (a1, a2), (r, h) */
         const unsigned char *p = (const unsigned char *)ray, *q = (const unsigned char *)cyl;
         CYL__P(pair) o, od, dd, c, ca, aa, rh;
@@ -1055,26 +1056,26 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
         f.a[0] = ca[1], f.a[1] = aa[0], f.a[2] = aa[1], f.r = rh[0], f.H = rh[1] * CYL__K(0.5);
     }
 #else
-    if (CYL__LD && !CYL__RD) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); } /* here: the t range reads too */
+    if (CYL__WIDE) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); } /* here: the t range reads too */
     CYL__P(load)(&f, ray, cyl);
 #endif
     f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX), f.lo = CYL__HOT_LO;
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
     ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
-#if defined(CYL__CVT2) && CYL__LD && !CYL__RD
+#if defined(CYL__CVT2) && CYL__WIDE
     { CYL__P(pair) t; CYL__CVT2(t, (const unsigned char *)ray + 24); f.tmin = f.rmin = t[0], f.tmax = f.rmax = t[1]; }
 #else
     f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
 #endif
     if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u)
-        ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
+        ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__HANDBACK ? &f : NULL);
     else {
-        if (CYL__LD && !CYL__RD) /* t representable in R: in the range (in_range) */
+        if (CYL__WIDE) /* t representable in R: in the range (in_range) */
             f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);
         ok = CYL__P(answer)(ray, cyl, &f, opts, want, hits, 0);
-        if (ok == CYL__DOUBT) ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__SCRATCH(&f));
+        if (ok == CYL__DOUBT) ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__HANDBACK ? &f : NULL);
     }
-    return CYL__SCRATCH(1) && ok == CYL__DOUBT ? CYL__P(answer)(ray, cyl, &f, opts, want, hits, 1) : ok;
+    return CYL__HANDBACK && ok == CYL__DOUBT ? CYL__P(answer)(ray, cyl, &f, opts, want, hits, 1) : ok;
 }
 
 #ifdef CYL__HELPER /* the handoff's target: one out-of-line copy for every call site */
@@ -1122,9 +1123,6 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
 #undef CYL__LD
 #undef CYL__RD
 #undef CYL__P
-#undef CYL__CERT
-#undef CYL__DOUBT
-#undef CYL__CAP_PART
 #undef CYL__LFASTFMA
 #endif /* CYL__P */
 
