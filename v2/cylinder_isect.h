@@ -151,10 +151,16 @@
    (gcc keeps an entry point called from several places out of line otherwise; -O0 folds nothing). */
 #if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
 #define CYL__INL static inline __attribute__((always_inline))
+#define CYL__ALWAYS CYL__INL
 #define CYL__HANDBACK 0
 #define CYL__UNROLL8 CYL__UNROLL
 #else /* the frame in memory: the exact path fills it, its caller answers it (one frame, less stack) */
 #define CYL__INL static inline
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) /* -Os: indices and arrays fold (stack) */
+#define CYL__ALWAYS static inline __attribute__((always_inline))
+#else
+#define CYL__ALWAYS static inline
+#endif
 #define CYL__HANDBACK 1
 #define CYL__UNROLL8 /* N8's loops rolled for size; the frame's unrolled (its pairs then leave the stack) */
 #endif
@@ -470,9 +476,10 @@ static int CYL__HANDOFF(out)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 typedef CYL__X(frame) CYL__P(frame);
 #else
 typedef struct CYL__P(frame) {
-    CYL__L w[3], wl[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax, vlim, lo;
-    CYL__L s[3], m[3], aa, ad, mm, aww, A, B, C, P, D, r2, r2aa, z0, zeta, sqaa, Ha, tc;
-    int et, ev, exact, cold, par; /* cold: the exact path's (FMA products, unscaled output) */
+    CYL__L w[3], wl[3], d[3], a[3], r, H, tmin, tmax, rmin, rmax;
+    CYL__L s[3], m[3], aa, ad, mm, aww, A, B, P, D, r2, r2aa, z0, zeta, sqaa, Ha, tc;
+    int et, ev;
+    unsigned char exact, cold, par; /* cold: the exact path's (FMA products, unscaled output) */
 } CYL__P(frame);
 static void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l);
 static CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap, CYL__L *lo);
@@ -489,7 +496,7 @@ CYL__INL CYL__L CYL__P(dot)(const CYL__L x[3], const CYL__L y[3]) { return x[0] 
 CYL__INL void CYL__P(cross3)(const CYL__L x[3], const CYL__L y[3], CYL__L z[3])
 { z[0] = x[1] * y[2] - x[2] * y[1], z[1] = x[2] * y[0] - x[0] * y[2], z[2] = x[0] * y[1] - x[1] * y[0]; }
 /* z = x·p + y·q, componentwise, written out (no loop: the frame stays in registers). */
-CYL__INL void CYL__P(lin)(CYL__L p, const CYL__L x[3], CYL__L q, const CYL__L y[3], CYL__L z[3])
+CYL__ALWAYS void CYL__P(lin)(CYL__L p, const CYL__L x[3], CYL__L q, const CYL__L y[3], CYL__L z[3])
 { z[0] = x[0] * p + y[0] * q, z[1] = x[1] * p + y[1] * q, z[2] = x[2] * p + y[2] * q; }
 /* A pair (N1) and the pair (x, y). */
 CYL__PAIR(CYL__L, CYL__P(pair));
@@ -569,7 +576,7 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     f->zeta = CYL__LANE(z, 0), f->z0 = CYL__LANE(z, 1), f->A = CYL__LANE(ab, 0), f->B = CYL__LANE(ab, 1);
     f->P = CYL__LANE(pm, 0), f->mm = CYL__LANE(pm, 1);
     f->ad = f->A + f->zeta * f->zeta, f->aww = f->mm + f->z0 * f->z0; /* |a|²|d|², |a|²|w|² */
-    f->aa = CYL__P(dot)(f->a, f->a), f->r2 = f->r * f->r, f->r2aa = f->r2 * f->aa, f->C = f->mm - f->r2aa;
+    f->aa = CYL__P(dot)(f->a, f->a), f->r2 = f->r * f->r, f->r2aa = f->r2 * f->aa;
     /* P = w·s = −m·d: with its accurate s and m the exact path takes the one of smaller error */
     if (f->cold && f->aww * f->A > f->mm * f->ad) f->P = -CYL__P(dot)(f->m, f->d);
     f->D = f->r2 * f->A - f->P * f->P; /* B² − AC = |a|²D (N3) */
@@ -580,7 +587,7 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
        products exact, those whose s or m loses 8 bits (N6): d or o − c within 2^-8 of the axis */
     if (!f->cold) lo = CYL__P(min)(CYL__P(min)(CYL__WIDE ? CYL__P(parallel)(f) :
         CYL__P(min)(65536 * f->A - f->ad, 65536 * f->mm - f->aww), f->r2 * f->A), lo);
-    return lo >= f->lo && f->aww + f->r2aa + f->ad + f->r2 * f->A <= CYL__HOT_HI &&
+    return lo >= (f->cold ? CYL__COLD_LO : CYL__HOT_LO) && f->aww + f->r2aa + f->ad + f->r2 * f->A <= CYL__HOT_HI &&
            (CYL__WIDE || !(f->Ha - f->H > CYL__LMAX)); /* a wider L: Ha < 2^256 */
 }
 
@@ -598,11 +605,11 @@ CYL__INL int CYL__P(classify_wall)(const CYL__P(frame) *f)
    root (D <= 0) is the point of closest approach, twice. Returns √(|a|²D). */
 CYL__INL CYL__L CYL__P(wall_roots)(const CYL__P(frame) *f, CYL__L t[2])
 {
-    CYL__L sq = 0, q;
+    CYL__L sq = 0, q, C = f->mm - f->r2aa;
     if (!(f->D > 0)) return t[0] = t[1] = -f->B / f->A, sq;
     sq = CYL__LSQRT(f->aa * f->D);
-    if (f->B < 0) q = sq - f->B, t[0] = f->C / q, t[1] = q / f->A; /* q² >= AC: in order */
-    else q = -(f->B + sq), t[0] = q / f->A, t[1] = f->C / q;
+    if (f->B < 0) q = sq - f->B, t[0] = C / q, t[1] = q / f->A; /* q² >= AC: in order */
+    else q = -(f->B + sq), t[0] = q / f->A, t[1] = C / q;
     q = t[0], t[0] = CYL__P(min)(q, t[1]), t[1] = CYL__P(max)(q, t[1]); /* but for rounding */
     return sq;
 }
@@ -633,7 +640,7 @@ CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t) { return !(t < f
    wall crossing inside the slab; the capped solid clips the wall interval with the slab (entry
    and exit the wall or a cap; a rim point is the wall). ok: it exists, in the t range. e: the
    certified layer's bounds on v (N9); doubt: a comparison within them. */
-CYL__INL CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, int k, const CYL__L v[4],
+CYL__ALWAYS CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts, int k, const CYL__L v[4],
                                         const CYL__L *e, const CYL__L l[4], CYL__L sq, unsigned tan)
 {
     CYL__P(cross) x;
@@ -735,17 +742,21 @@ CYL__INL CYL__L CYL__P(axial_v)(const CYL__P(frame) *f, CYL__L t)
 CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl, const CYL__P(cross) *x, unsigned opts,
                           CYL__N(hit) *hit)
 {
-    CYL__L n[3] = {0, 0, 0}, t = x->t, err = CYL__LINF, v;
+    CYL__L n[3] = {0, 0, 0}, t = x->t, err = CYL__LINF, v, vlim = 0;
     CYL__R tr, vr, er;
     const int side = !(opts & CYL_CAPS) || x->part == CYL_SIDE; /* the open tube emits walls alone */
     if (!(opts & CYL_NO_ERRBOUND)) err = side ? CYL__P(bound_wall)(f, x) : CYL__P(bound_cap)(f, x);
     if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, cyl, x, opts, side, n);
     v = side ? CYL__P(axial_v)(f, t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
+    if (f->cold || CYL__WIDE) { /* h/2 in R, rounded toward 0 (R's subnormals) */
+        vlim = CYL__P(min)(f->cold ? (CYL__L)cyl->h * CYL__K(0.5) : f->H, (CYL__L)CYL__RMAX);
+        if (!CYL__WIDE && vlim * 2 > (CYL__L)cyl->h) vlim = (CYL__L)CYL__P(toward0)((CYL__R)vlim);
+    }
     if (f->cold) {
         CYL__L t0 = CYL__LT(scale)(t, f->et);
         t = CYL__P(max)(f->rmin, CYL__P(min)(t0, f->rmax));
         err = f->exact ? CYL__LT(scale)(err, f->et) + CYL__LTINY + CYL__P(abs)(t - t0) : CYL__LINF;
-        v = CYL__P(max)(-f->vlim, CYL__P(min)(CYL__LT(scale)(v, f->ev), f->vlim));
+        v = CYL__P(max)(-vlim, CYL__P(min)(CYL__LT(scale)(v, f->ev), vlim));
     }
     tr = (CYL__R)t, vr = (CYL__R)v, er = (CYL__R)err;
     if (CYL__WIDE) {
@@ -753,7 +764,7 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl, 
         if (!(opts & CYL_NO_ERRBOUND)) /* t's rounding to R joins the bound, rounded up in R */
             er = (CYL__R)(err + CYL__P(abs)((CYL__L)tr - t)), /* (beyond R's range: inf) */
             er = er * (1 + 2 * (CYL__R)CYL__IFR(DBL_EPSILON, FLT_EPSILON)) + (CYL__R)1.40129846432481707e-45;
-        if (CYL__P(abs)((CYL__L)vr) > f->vlim) vr = CYL__P(toward0)(vr);
+        if (CYL__P(abs)((CYL__L)vr) > vlim) vr = CYL__P(toward0)(vr);
     }
     hit->t = tr, hit->t_err = er, hit->v = vr; /* cppcheck-suppress ctunullpointer ; occluded's NULL: no emit */
     hit->n[0] = (CYL__R)n[0], hit->n[1] = (CYL__R)n[1], hit->n[2] = (CYL__R)n[2];
@@ -1008,10 +1019,7 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     m = CYL__LT(scale)((CYL__L)CYL__RMAX, -f->et); /* R's largest t */
     f->tmin = CYL__P(max)(CYL__LT(scale)((CYL__L)ray->tmin, -f->et), -m), f->rmin = (CYL__L)ray->tmin;
     f->tmax = CYL__P(min)(CYL__LT(scale)((CYL__L)ray->tmax, -f->et), m), f->rmax = (CYL__L)ray->tmax;
-    f->vlim = CYL__P(min)((CYL__L)cyl->h * CYL__K(0.5), (CYL__L)CYL__RMAX);
-    if (!CYL__WIDE && f->vlim * 2 > (CYL__L)cyl->h) /* h/2 rounded up */
-        f->vlim = (CYL__L)CYL__P(toward0)((CYL__R)f->vlim);
-    f->lo = CYL__COLD_LO, f->cold = f->exact = 1;
+    f->cold = f->exact = 1;
 }
 
 /* The exact path: validates, scales, answers on the same decisions; ratios out of range even
@@ -1026,7 +1034,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     CYL__P(load_scaled)(f, ray, cyl);
     while (!CYL__P(derive)(f)) { /* one call: it is inlined once */
         if (!f->exact) return CYL_MISS;
-        f->r = CYL__P(max)(f->r, CYL__LSQRT(f->lo) * 2), f->H = CYL__P(max)(f->H, f->lo * 2), f->exact = 0;
+        f->r = CYL__P(max)(f->r, CYL__LSQRT(CYL__COLD_LO) * 2), f->H = CYL__P(max)(f->H, CYL__COLD_LO * 2), f->exact = 0;
     }
     f->par = CYL__P(parallel)(f) <= 0;
     if ((CYL__SUPPORTED & CYL_PRECISE) && f->exact) CYL__X(exact_frame)(f); /* N8 */
@@ -1059,7 +1067,6 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     if (CYL__WIDE) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); } /* here: the t range reads too */
     CYL__P(load)(&f, ray, cyl);
 #endif
-    f.vlim = CYL__P(min)(f.H, (CYL__L)CYL__RMAX), f.lo = CYL__HOT_LO;
     f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
     ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
 #if defined(CYL__CVT2) && CYL__WIDE
