@@ -149,18 +149,17 @@
 
 /* Forced inline when optimizing for speed, so that constant options fold at every call site
    (gcc keeps an entry point called from several places out of line otherwise; -O0 folds nothing). */
-#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
-#define CYL__INL static inline __attribute__((always_inline))
-#define CYL__ALWAYS CYL__INL
-#define CYL__HANDBACK 0
-#define CYL__UNROLL8 CYL__UNROLL
-#else /* the frame in memory: the exact path fills it, its caller answers it (one frame, less stack) */
-#define CYL__INL static inline
-#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) /* -Os: indices and arrays fold (stack) */
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) /* -Os too: indices and arrays fold (stack) */
 #define CYL__ALWAYS static inline __attribute__((always_inline))
 #else
 #define CYL__ALWAYS static inline
 #endif
+#if defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
+#define CYL__INL CYL__ALWAYS
+#define CYL__HANDBACK 0
+#define CYL__UNROLL8 CYL__UNROLL
+#else /* the frame in memory: the exact path fills it, its caller answers it (one frame, less stack) */
+#define CYL__INL static inline
 #define CYL__HANDBACK 1
 #define CYL__UNROLL8 /* N8's loops rolled for size; the frame's unrolled (its pairs then leave the stack) */
 #endif
@@ -650,16 +649,14 @@ CYL__ALWAYS CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts
     x.doubt = e && (CYL__P(near)(v[k], ex, v[2], e[2]) || CYL__P(near)(v[k], ex, v[3], e[3]));
     if (!x.ok && (opts & CYL_CAPS) && (k ? CYL__P(before)(f, v, l, 3, 1) && !CYL__P(before)(f, v, l, 3, 0)
                                          : CYL__P(before)(f, v, l, 0, 2) && !CYL__P(before)(f, v, l, 1, 2))) {
-        x.t = v[2 + k], x.ok = 1, x.flags &= ~CYL_F_TANGENT;
-        x.part = CYL__CAP_PART(f, k);
+        x.t = v[2 + k], x.ok = 1, x.flags &= ~CYL_F_TANGENT, x.part = CYL__CAP_PART(f, k);
         if (e) ex = e[2 + k], x.doubt |= CYL__P(near)(v[2 + k], ex, v[1 - k], e[1 - k]);
     }
     if (e && x.ok) x.doubt |= CYL__P(near)(x.t, ex, f->tmin, 0) || CYL__P(near)(x.t, ex, f->tmax, 0);
     if (f->par) { /* a parallel ray's cap crossing counts where its point is inside the disk */
         CYL__L y[3];
         CYL__P(lin)(1, f->m, x.t, f->s, y);
-        x.ok = x.ok && x.part != CYL_SIDE && CYL__P(dot)(y, y) <= f->r2aa;
-        x.flags |= CYL_F_PARALLEL;
+        x.ok = x.ok && x.part != CYL_SIDE && CYL__P(dot)(y, y) <= f->r2aa, x.flags |= CYL_F_PARALLEL;
     }
     x.ok = x.ok && CYL__P(in_range)(f, x.t);
     return x;
@@ -692,9 +689,8 @@ CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *
     yy = CYL__P(dot)(y, y), ny = CYL__LSQRT(yy), F = yy - f->r2aa, G = CYL__P(dot)(y, f->s);
     /* y's error, widened to cover |y|²'s, r²|a|²'s and y·s's roundings too; s's is u|a||d|'s
        (steep rays: |s| itself scales the rest); |F|'s own rounding: in EA and the factor (N5) */
-    Ey = 8 * u * (CYL__LSQRT(f->aww) + ny) + CYL__P(abs)(x->t) * (10 * u * nd);
+    Ey = 8 * u * (CYL__LSQRT(f->aww) + ny) + CYL__P(abs)(x->t) * (10 * u * nd), EA = 32 * u * f->ad;
     Fb = CYL__P(abs)(F) + Ey * (2 * ny + Ey), EG = Ey * CYL__LSQRT(f->A) + (ny + Ey) * (5 * u) * nd;
-    EA = 32 * u * f->ad;
     /* G with the crossing's sign (entry negative), any sign for a tangent contact */
     Gb = (x->flags & CYL_F_TANGENT ? CYL__P(abs)(G) : x->flags & CYL_F_INSIDE ? G : -G) - EG;
     if (Gb > 0 && Gb * Gb >= (f->A + EA) * Fb) return Fb / Gb * (1 + 48 * u);
@@ -879,8 +875,7 @@ CYL__INL void CYL__P(norm_a)(const CYL__P(frame) *f, CYL__L sa[2], CYL__L ra[3])
     CYL__L aah, aal, p, r2 = f->r * f->r;
     CYL__P(acc) aa = CYL__P(acc_prod)(f->a[0], f->a[0]);
     CYL__P(acc_mul)(&aa, f->a[1], f->a[1]), CYL__P(acc_mul)(&aa, f->a[2], f->a[2]);
-    aah = CYL__P(acc_pair)(&aa, &aal);
-    sa[0] = CYL__LSQRT(aah), p = sa[0] * sa[0];
+    aah = CYL__P(acc_pair)(&aa, &aal), sa[0] = CYL__LSQRT(aah), p = sa[0] * sa[0];
     sa[1] = ((aah - p) - CYL__P(prod_err)(sa[0], sa[0], p) + aal) / (2 * sa[0]);
     ra[0] = -r2 * aah, ra[1] = CYL__P(prod_err)(-r2, aah, ra[0]);
     ra[2] = CYL__P(prod_err)(f->r, f->r, r2) * aah + r2 * aal;
