@@ -751,7 +751,7 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl, 
     if (f->cold) {
         CYL__L t0 = CYL__LT(scale)(t, f->et);
         t = CYL__P(max)(f->rmin, CYL__P(min)(t0, f->rmax));
-        err = f->exact ? CYL__LT(scale)(err, f->et) + CYL__LTINY + CYL__P(abs)(t - t0) : CYL__LINF;
+        err = f->exact && !(opts & CYL_NO_ERRBOUND) ? CYL__LT(scale)(err, f->et) + CYL__LTINY + CYL__P(abs)(t - t0) : CYL__LINF;
         v = CYL__P(max)(-vlim, CYL__P(min)(CYL__LT(scale)(v, f->ev), vlim));
     }
     tr = (CYL__R)t, vr = (CYL__R)v, er = (CYL__R)err;
