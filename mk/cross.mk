@@ -27,10 +27,11 @@ CHECK_TARGETS += $(CROSS_CHECKS)
 # their current counts (the check itself is misra-check).
 ifeq ($(V),2)
 # v2 beside v1: its figures stay in $(BUILD)/sizes (docs/embedded.md describes the product, v1),
-# then the limits v2 must meet to replace it (issue 30). nofast's macro is gone from v2.
+# then the limits v2 must meet to replace it (issue 30); it fails when one it met before
+# (embedded/gates-held.txt) is no longer met. nofast's macro is gone from v2.
 sizes:
 	@$(CROSS_ENV) bash scripts/cross.sh sizes --no-doc
-	@$(PYTHON) scripts/cross.py gates $(BUILD)/sizes/sizes.csv
+	@$(PYTHON) scripts/cross.py gates $(BUILD)/sizes/sizes.csv embedded/gates-held.txt
 else
 sizes:
 	@$(CROSS_ENV) bash scripts/cross.sh sizes
