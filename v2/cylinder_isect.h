@@ -147,14 +147,14 @@
 #error "cylinder_isect.h: needs FLT_EVAL_METHOD == 0 (no excess precision, e.g. x87); use SSE2, or -fexcess-precision=fast"
 #endif
 
-/* Forced inline when optimizing for speed, so that constant options fold at every call site
-   (gcc keeps an entry point called from several places out of line otherwise; -O0 folds nothing). */
-#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) /* -Os too: indices and arrays fold (stack) */
+/* CYL__INL forced inline when optimizing for speed: constant options fold at every call site (gcc keeps
+   an entry point called from several places out of line otherwise). CYL__ALWAYS at -Os too (stack). */
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__)
 #define CYL__ALWAYS static inline __attribute__((always_inline))
 #else
 #define CYL__ALWAYS static inline
 #endif
-#if defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
 #define CYL__INL CYL__ALWAYS
 #define CYL__HANDBACK 0
 #define CYL__UNROLL8 CYL__UNROLL
@@ -548,10 +548,10 @@ CYL__INL void CYL__P(load)(CYL__P(frame) *f, const CYL__N(ray) *ray, const CYL__
 }
 
 CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f);
-/* Everything the decisions use, from s = a × d and m = a × w (N1), and the range test (N2) on
-   derived values: r|a|, r²|a|², |a|²|d|², Ha and (hot path) r²A and the steep margin at least lo;
-   |a|²(|w|² + r²), |a|²|d|² and r²A (>= D) summed at most hi; Ha finite unless h is (always so
-   where L is wider than R). Every NaN, infinity, zero or negative of o, d, c, a, r, h fails it. */
+/* Everything the decisions use, from s = a × d and m = a × w (N1), and the range test (N2) on derived
+   values: r|a|, r²|a|², |a|²|d|², Ha and (hot path) r²A and the steep margin at least HOT_LO (exact path:
+   COLD_LO); |a|²(|w|² + r²), |a|²|d|² and r²A (>= D) summed at most HOT_HI; Ha finite unless h is (always
+   so where L is wider than R). Every NaN, infinity, zero or negative of o, d, c, a, r, h fails it. */
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
     CYL__L ml[3], lo;
@@ -744,7 +744,7 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl, 
     if (!(opts & CYL_NO_ERRBOUND)) err = side ? CYL__P(bound_wall)(f, x) : CYL__P(bound_cap)(f, x);
     if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, cyl, x, opts, side, n);
     v = side ? CYL__P(axial_v)(f, t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
-    if (f->cold || CYL__WIDE) { /* h/2 in R, rounded toward 0 (R's subnormals) */
+    if (f->cold || CYL__WIDE) { /* h/2 within R's range; in R itself rounded toward 0 (R's subnormals) */
         vlim = CYL__P(min)(f->cold ? (CYL__L)cyl->h * CYL__K(0.5) : f->H, (CYL__L)CYL__RMAX);
         if (!CYL__WIDE && vlim * 2 > (CYL__L)cyl->h) vlim = (CYL__L)CYL__P(toward0)((CYL__R)vlim);
     }
