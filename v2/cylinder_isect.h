@@ -459,7 +459,6 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__XOWN
 #endif
 
-
 #ifndef CYL__HELPER /* the public types (a helper body has its API's already) */
 typedef struct CYL__N(ray) { CYL__R o[3], d[3], tmin, tmax; } CYL__N(ray);
 typedef struct CYL__N(cylinder) { CYL__R c[3], a[3], r, h; } CYL__N(cylinder);
@@ -470,7 +469,8 @@ static int CYL__HANDOFF(out)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl
 #endif
 
 /* The frame (N1): the inputs in L, scaled on the exact path (t, v there 2^et, 2^ev times the
-   frame's), and everything derived from them once; tc: the exact path's closest approach. */
+   frame's), and everything derived from them once; set by the exact path alone: et, ev, exact,
+   rmin, rmax (the caller's t range) and tc (the closest approach). */
 #ifndef CYL__XOWN
 typedef CYL__X(frame) CYL__P(frame);
 #else
@@ -1062,12 +1062,12 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
     if (CYL__WIDE) { CYL__LAUNDER(ray); CYL__LAUNDER(cyl); } /* here: the t range reads too */
     CYL__P(load)(&f, ray, cyl);
 #endif
-    f.et = f.ev = f.cold = f.par = 0, f.exact = 1;
+    f.cold = f.par = 0; /* the exact path's fields: load_scaled's */
     ok = CYL__P(derive)(&f); /* the t range read after it: fewer values live (and spilled) */
 #if defined(CYL__CVT2) && CYL__WIDE
-    { CYL__P(pair) t; CYL__CVT2(t, (const unsigned char *)ray + 24); f.tmin = f.rmin = t[0], f.tmax = f.rmax = t[1]; }
+    { CYL__P(pair) t; CYL__CVT2(t, (const unsigned char *)ray + 24); f.tmin = t[0], f.tmax = t[1]; }
 #else
-    f.tmin = f.rmin = (CYL__L)ray->tmin, f.tmax = f.rmax = (CYL__L)ray->tmax;
+    f.tmin = (CYL__L)ray->tmin, f.tmax = (CYL__L)ray->tmax;
 #endif
     if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u)
         ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__HANDBACK ? &f : NULL);
