@@ -162,6 +162,8 @@ MUTANTS_V2 = [
   "msg[code - CYL_E_OPTION + 1];"),
  ("-O0/-Os: the exact path's frame left unanswered", "return CYL__HANDBACK && ok == CYL__DOUBT ? CYL__P(answer)(ray, cyl, &f, opts, want, hits, 1) : ok;",
   "return ok;"),
+ ("discriminant as B² − AC (N3's cancellation)", "f->D = f->r2 * f->A - f->P * f->P;",
+  "f->D = (f->B * f->B - f->A * (f->mm - f->r2aa)) / f->aa;"),
 ]
 
 
