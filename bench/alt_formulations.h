@@ -34,7 +34,10 @@
  *
  * There is no input validation: both are what a user would write, and they are deliberately
  * NOT made robust. Do not "fix" their numerics: they exist to show what the textbook
- * arithmetic gives.
+ * arithmetic gives. Their vector operations are written component by component, as a C port
+ * of vec3 code reads and as the library writes its own: gcc -O2 keeps a loop of three trips,
+ * with its arrays in memory, and such loops made these routines look several times slower
+ * than a port of the articles' code runs.
  *
  * 1. The literal formulation ("ray vs cylinder with center c, axis a, radius r, height h",
  *    the classic exercise taken literally, with the axis stored as a unit vector â).
@@ -179,15 +182,15 @@ static inline int ALT__F(literal_solve)(const ALT__RAY *ray, const ALT__F(litera
     const ALT__T r = cyl->r, h = cyl->h;
     ALT__T w[3], dp[3], wp[3], x[3], n[3];
     ALT__T ad, aw, A, B, C, disc, best_t = (ALT__T)0, best_n[3] = {0, 0, 0};
-    int i, k, best_part = CYL_SIDE, found = 0;
+    int k, best_part = CYL_SIDE, found = 0;
 
-    for (i = 0; i < 3; ++i) w[i] = o[i] - c[i];
+    /* vector operations component by component (see the top of this file) */
+    w[0] = o[0] - c[0], w[1] = o[1] - c[1], w[2] = o[2] - c[2];
     ad = ALT__PRIV(dot)(ah, d);
     aw = ALT__PRIV(dot)(ah, w);
-    for (i = 0; i < 3; ++i) {           /* projections (I - a a^T) d and (I - a a^T) w */
-        dp[i] = d[i] - ah[i] * ad;
-        wp[i] = w[i] - ah[i] * aw;
-    }
+    /* projections (I - a a^T) d and (I - a a^T) w */
+    dp[0] = d[0] - ah[0] * ad, dp[1] = d[1] - ah[1] * ad, dp[2] = d[2] - ah[2] * ad;
+    wp[0] = w[0] - ah[0] * aw, wp[1] = w[1] - ah[1] * aw, wp[2] = w[2] - ah[2] * aw;
     A = ALT__PRIV(dot)(dp, dp);
     B = (ALT__T)2 * ALT__PRIV(dot)(dp, wp);
     C = ALT__PRIV(dot)(wp, wp) - r * r;
@@ -203,14 +206,16 @@ static inline int ALT__F(literal_solve)(const ALT__RAY *ray, const ALT__F(litera
                 ALT__T t = roots[k], xc[3], v;
                 if (!(t >= ray->tmin && t <= ray->tmax)) continue;
                 if (found && !(t < best_t)) continue;
-                for (i = 0; i < 3; ++i) xc[i] = o[i] + t * d[i] - c[i];
+                xc[0] = o[0] + t * d[0] - c[0];
+                xc[1] = o[1] + t * d[1] - c[1];
+                xc[2] = o[2] + t * d[2] - c[2];
                 /* height test as a squared distance to the centre: |x-c|^2 <= r^2 + h^2/4 */
                 if (!(ALT__PRIV(dot)(xc, xc) <= r * r + h * h / (ALT__T)4)) continue;
                 v = ALT__PRIV(dot)(ah, xc);
-                for (i = 0; i < 3; ++i) n[i] = xc[i] - ah[i] * v;   /* projection of x - c */
-                {
+                n[0] = xc[0] - ah[0] * v, n[1] = xc[1] - ah[1] * v, n[2] = xc[2] - ah[2] * v;
+                {                                                  /* projection of x - c */
                     ALT__T nl = ALT__SQRT(ALT__PRIV(dot)(n, n));
-                    for (i = 0; i < 3; ++i) best_n[i] = n[i] / nl;
+                    best_n[0] = n[0] / nl, best_n[1] = n[1] / nl, best_n[2] = n[2] / nl;
                 }
                 best_t = t;
                 best_part = CYL_SIDE;
@@ -223,19 +228,17 @@ static inline int ALT__F(literal_solve)(const ALT__RAY *ray, const ALT__F(litera
         for (k = 0; k < 2; ++k) {
             ALT__T sgn = k == 0 ? (ALT__T)-1 : (ALT__T)1;
             ALT__T ci[3], co[3], t, xr[3];
-            for (i = 0; i < 3; ++i) {
-                ci[i] = c[i] + sgn * ah[i] * h / (ALT__T)2;
-                co[i] = ci[i] - o[i];
-            }
+            ci[0] = c[0] + sgn * ah[0] * h / (ALT__T)2;
+            ci[1] = c[1] + sgn * ah[1] * h / (ALT__T)2;
+            ci[2] = c[2] + sgn * ah[2] * h / (ALT__T)2;
+            co[0] = ci[0] - o[0], co[1] = ci[1] - o[1], co[2] = ci[2] - o[2];
             t = ALT__PRIV(dot)(ah, co) / ad;
             if (!(t >= ray->tmin && t <= ray->tmax)) continue;
             if (found && !(t < best_t)) continue;
-            for (i = 0; i < 3; ++i) {
-                x[i] = o[i] + t * d[i];
-                xr[i] = x[i] - ci[i];
-            }
+            x[0] = o[0] + t * d[0], x[1] = o[1] + t * d[1], x[2] = o[2] + t * d[2];
+            xr[0] = x[0] - ci[0], xr[1] = x[1] - ci[1], xr[2] = x[2] - ci[2];
             if (!(ALT__PRIV(dot)(xr, xr) <= r * r)) continue;
-            for (i = 0; i < 3; ++i) best_n[i] = sgn * ah[i];
+            best_n[0] = sgn * ah[0], best_n[1] = sgn * ah[1], best_n[2] = sgn * ah[2];
             best_t = t;
             best_part = k == 0 ? CYL_CAP_LOW : CYL_CAP_HIGH;
             found = 1;
@@ -244,7 +247,7 @@ static inline int ALT__F(literal_solve)(const ALT__RAY *ray, const ALT__F(litera
 
     if (!found) return 0;
     out->t = best_t;
-    for (i = 0; i < 3; ++i) out->n[i] = best_n[i];
+    out->n[0] = best_n[0], out->n[1] = best_n[1], out->n[2] = best_n[2];
     return 1 + best_part;
 }
 
@@ -252,14 +255,12 @@ static inline int ALT__F(literal_solve)(const ALT__RAY *ray, const ALT__F(litera
 static inline int ALT__F(endpoint_solve)(const ALT__RAY *ray, const ALT__F(endpoint_cyl) *cyl,
                                          ALT__F(out) *out)
 {
-    const ALT__T *o = ray->o, *d = ray->d, ra = cyl->ra;
-    ALT__T ba[3], oc[3], baba, bard, baoc, k2, k1, k0, disc, sq, t, y, m;
-    int i;
+    const ALT__T *o = ray->o, *d = ray->d, *pa = cyl->pa, *pb = cyl->pb, ra = cyl->ra;
+    /* the article's vec3 code, component by component (see the top of this file) */
+    const ALT__T ba[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+    const ALT__T oc[3] = {o[0] - pa[0], o[1] - pa[1], o[2] - pa[2]};
+    ALT__T baba, bard, baoc, k2, k1, k0, disc, sq, t, y, m;
 
-    for (i = 0; i < 3; ++i) {
-        ba[i] = cyl->pb[i] - cyl->pa[i];
-        oc[i] = o[i] - cyl->pa[i];
-    }
     baba = ALT__PRIV(dot)(ba, ba);
     bard = ALT__PRIV(dot)(ba, d);
     baoc = ALT__PRIV(dot)(ba, oc);
@@ -275,7 +276,9 @@ static inline int ALT__F(endpoint_solve)(const ALT__RAY *ray, const ALT__F(endpo
         ALT__T yb = y / baba;
         if (!(t >= ray->tmin && t <= ray->tmax)) return 0;
         out->t = t;
-        for (i = 0; i < 3; ++i) out->n[i] = (oc[i] + t * d[i] - ba[i] * yb) / ra;
+        out->n[0] = (oc[0] + t * d[0] - ba[0] * yb) / ra;
+        out->n[1] = (oc[1] + t * d[1] - ba[1] * yb) / ra;
+        out->n[2] = (oc[2] + t * d[2] - ba[2] * yb) / ra;
         return 1 + CYL_SIDE;
     }
     t = ((y < (ALT__T)0 ? (ALT__T)0 : baba) - baoc) / bard;  /* cap on the side of y */
@@ -285,7 +288,7 @@ static inline int ALT__F(endpoint_solve)(const ALT__RAY *ray, const ALT__F(endpo
     {
         ALT__T s = (y < (ALT__T)0 ? (ALT__T)-1 : (ALT__T)1) / ALT__SQRT(baba);
         out->t = t;
-        for (i = 0; i < 3; ++i) out->n[i] = ba[i] * s;
+        out->n[0] = ba[0] * s, out->n[1] = ba[1] * s, out->n[2] = ba[2] * s;
     }
     return 1 + (y < (ALT__T)0 ? CYL_CAP_LOW : CYL_CAP_HIGH);
 }
