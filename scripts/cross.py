@@ -264,7 +264,8 @@ def gates(sizes_csv, held_txt=None):
         rows = {(r["target"], r["config"], r["precision"]): r for r in csv.DictReader(f)}
     held = set()
     if held_txt:
-        held = {tuple(l.split()) for l in open(held_txt) if l.strip() and not l.startswith("#")}
+        with open(held_txt) as f:
+            held = {tuple(l.split()) for l in f if l.strip() and not l.startswith("#")}
         unknown = held - {(t, c, p, what) for t, c, p, what, *_ in GATES}
         if unknown:
             sys.exit(f"gates: {held_txt} names limits GATES does not have: {sorted(unknown)}")
