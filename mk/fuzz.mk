@@ -144,7 +144,7 @@ fuzz-replay: unity $(FUZZ_RUNNERS)
 
 # ---------------------------------------------------------------- coverage
 # The replay driver built with clang's source-based coverage, run over both corpora and the
-# findings; the report covers cylinder_isect.h only.
+# findings; the report covers the header under test ($(HDR)) only.
 $(FUZZ_DIR)/replay-cov: fuzz/replay.c $(FUZZ_HDRS) $(UNITY_C) $(FUZZ_REF_OBJ_COV)
 	@mkdir -p $(@D)
 	$(CLANG) $(WARN_C) -O0 -fprofile-instr-generate -fcoverage-mapping $(UNITY_FLAGS) -I. -Ifuzz \
@@ -162,4 +162,4 @@ fuzz-cov: unity $(FUZZ_DIR)/replay-cov
 	-LLVM_PROFILE_FILE=$(FUZZ_DIR)/cov-findings.profraw $(FUZZ_DIR)/replay-cov -v fuzz/findings/* \
 	  >$(FUZZ_DIR)/cov-findings.txt 2>&1
 	$(LLVM_PROFDATA) merge -sparse $(FUZZ_DIR)/cov-corpus.profraw $(FUZZ_DIR)/cov-findings.profraw -o $(FUZZ_DIR)/cov.profdata
-	@bash fuzz/coverage.sh "$(LLVM_COV)" $(FUZZ_DIR)/replay-cov $(FUZZ_DIR)/cov.profdata $(FUZZ_DIR)
+	@bash fuzz/coverage.sh "$(LLVM_COV)" $(FUZZ_DIR)/replay-cov $(FUZZ_DIR)/cov.profdata $(FUZZ_DIR) $(HDR)
