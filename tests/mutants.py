@@ -164,6 +164,7 @@ MUTANTS_V2 = [
   "return ok;"),
  ("discriminant as B² − AC (N3's cancellation)", "f->D = f->r2 * f->A - f->P * f->P;",
   "f->D = (f->B * f->B - f->A * (f->mm - f->r2aa)) / f->aa;"),
+ ("exact path: a huge h/2 left unscaled (Ha overflows)", "? kh : kl; /* finite h", "? kl : kl; /* finite h"),
 ]
 
 

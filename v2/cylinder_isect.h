@@ -550,8 +550,8 @@ CYL__INL void CYL__P(load)(CYL__P(frame) *f, const CYL__N(ray) *ray, const CYL__
 CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f);
 /* Everything the decisions use, from s = a × d and m = a × w (N1), and the range test (N2) on derived
    values: r|a|, r²|a|², |a|²|d|², Ha and (hot path) r²A and the steep margin at least HOT_LO (exact path:
-   COLD_LO); |a|²(|w|² + r²), |a|²|d|² and r²A (>= D) summed at most HOT_HI; Ha finite unless h is (always
-   so where L is wider than R). Every NaN, infinity, zero or negative of o, d, c, a, r, h fails it. */
+   COLD_LO); |a|²(|w|² + r²), |a|²|d|² and r²A (>= D) summed at most HOT_HI (Ha: no test, N2). Every NaN,
+   infinity, zero or negative of o, d, c, a, r, h fails it. */
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
     CYL__L ml[3], lo;
@@ -586,8 +586,7 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
        products exact, those whose s or m loses 8 bits (N6): d or o − c within 2^-8 of the axis */
     if (!f->cold) lo = CYL__P(min)(CYL__P(min)(CYL__WIDE ? CYL__P(parallel)(f) :
         CYL__P(min)(65536 * f->A - f->ad, 65536 * f->mm - f->aww), f->r2 * f->A), lo);
-    return lo >= (f->cold ? CYL__COLD_LO : CYL__HOT_LO) && f->aww + f->r2aa + f->ad + f->r2 * f->A <= CYL__HOT_HI &&
-           (CYL__WIDE || !(f->Ha - f->H > CYL__LMAX)); /* a wider L: Ha < 2^256 */
+    return lo >= (f->cold ? CYL__COLD_LO : CYL__HOT_LO) && f->aww + f->r2aa + f->ad + f->r2 * f->A <= CYL__HOT_HI;
 }
 
 /* ------------------------------------------------------------------ decisions */
@@ -723,8 +722,7 @@ CYL__INL void CYL__P(normal)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl
         P /= q, h /= q; /* the exact path's P² can leave the range (the hot path's cannot, N2) */
     else if (f->cold) h = x->flags & CYL_F_INSIDE ? f->aa : -f->aa; /* P = D = 0 (hot: q >= r²A) */
     q = P * P + h * h / f->aa; /* |P|a|²s ∓ h(a × s)| = |a|²√(Aq) (N5) */
-    CYL__P(cross3)(a, f->s, as);
-    q = 1 / CYL__LSQRT(f->A * q);
+    CYL__P(cross3)(a, f->s, as), q = 1 / CYL__LSQRT(f->A * q);
     CYL__P(lin)(P * q, f->s, -h / f->aa * q, as, n);
     CYL__P(mul3)(g, n, n); /* turned last: the two normals negate bit for bit */
 }
@@ -790,8 +788,7 @@ CYL__INL int CYL__P(bounds)(const CYL__P(frame) *f, const CYL__L v[4], CYL__L sq
 /* polish of a hot path's t from the caller's inputs, so that its frame stays in registers (N9). */
 CYL__OUT CYL__L CYL__P(polish_hot)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, CYL__L t, int part, CYL__L gap)
 {
-    CYL__P(frame) f;
-    int i;
+    CYL__P(frame) f; int i;
     CYL__UNROLL8 for (CYL__P(load)(&f, ray, cyl), i = 0; i < 3; i++) /* w exact as w + wl */
         f.wl[i] = CYL__P(sum_err)((CYL__L)ray->o[i], -(CYL__L)cyl->c[i], f.w[i]);
     return CYL__P(cross3)(f.a, f.d, f.s), CYL__X(polish)(&f, t, part, gap, NULL);
@@ -989,12 +986,12 @@ static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder
     return (opts & ~CYL__SUPPORTED) != 0u ? CYL_E_OPTION : 0;
 }
 
-/* The frame of valid input scaled into the range (N2): lengths by 2^-kl, d by 2^-kd, a by
-   2^-ka (exact); o − c exactly as a pair, from halved o and c where it would overflow. */
+/* The frame of valid input scaled into the range (N2): lengths by 2^-kl (h/2 below 2^(emax − 2): Ha, |a|
+   < 4, finite), d by 2^-kd, a by 2^-ka (exact); o − c exactly as a pair, halved where it overflows. */
 static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl)
 {
     CYL__L wr[3], m;
-    int j = 0, kl, kd, ka, i;
+    int j = 0, kl, kd, ka, kh, i;
     for (i = 0; i < 3; i++) /* halved (exact) only where o − c overflows: small parts stay */
         if (!(CYL__P(abs)((CYL__L)ray->o[i] - (CYL__L)cyl->c[i]) <= CYL__LMAX)) j = 1;
     for (i = 0; i < 3; i++) { /* o − c = wr + f->wl exactly */
@@ -1003,7 +1000,8 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     }
     for (i = 0; i < 3; i++) f->d[i] = (CYL__L)ray->d[i], f->a[i] = (CYL__L)cyl->a[i];
     m = CYL__P(max)(CYL__P(amax)(wr), CYL__LT(scale)((CYL__L)cyl->r, -j));
-    kl = (m > 0 ? CYL__LT(expo)(m) : 0) + j;
+    kl = (m > 0 ? CYL__LT(expo)(m) : 0) + j, kh = CYL__LT(expo)((CYL__L)cyl->h) - CYL__IFL(1021, 125);
+    kl = kh > kl && (CYL__L)cyl->h <= CYL__LMAX ? kh : kl; /* finite h: h/2 below 2^(emax − 2) */
     kd = CYL__LT(expo)(CYL__P(amax)(f->d)), ka = CYL__LT(expo)(CYL__P(amax)(f->a));
     for (i = 0; i < 3; i++) {
         f->w[i] = CYL__LT(scale)(wr[i], j - kl), f->wl[i] = CYL__LT(scale)(f->wl[i], j - kl);
@@ -1132,15 +1130,17 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
    N1. One formulation (DESIGN.md of the project): w = o − c, s = a × d, m = a × w (cross products, never
        projections: no cancellation for rays near the axis direction or origins far along it), A = s·s, B =
        m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d, Ha = (h/2)|a|, formed in pairs (s, m), (ζ, z0), (A, B), (P,
-       |m|²): vectors where the compiler has them, one instruction for two, the same bits. The exact path
-       forms s and m with Kahan's FMA difference of products (Jeannerod, Louvet, Muller, Math. Comp. 82,
-       2013), within 2u each.
+       |m|²): vectors where the compiler has them, one instruction for two, the same bits. The exact path forms
+       s and m with Kahan's FMA difference of products (Jeannerod, Louvet, Muller, Math. Comp. 82, 2013), 2u each.
    N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², r²A (else D can be
        subnormal), Ha and |a|²(|w|² + r²) against one range, [2^-300, 2^450] in double: the largest products
        the bounds form, such as |a|²D <= r²|a|²·|a|²|d|², stay below 2^900. Every NaN, infinity, zero or
        out-of-range input fails it and goes to the exact path, which validates in the documented order (unless
        CYL_TRUSTED) and scales lengths, d and a by powers of two (exact: its answers to a scene scaled by 2^k
-       are the same bits scaled; the hot path's, without N8's step, agree within t_err).
+       are the same bits scaled; the hot path's, without N8's step, agree within t_err). Ha = ∞ for a finite h
+       changes no answer of the hot path: |a||w|, r|a| <= √HOT_HI and sin(d, a) >= 2^-8 keep |a| times a wall
+       point's axial coordinate below 2^10·√HOT_HI, all inside the slab (−∞, ∞) it gives, as inside the true
+       one; the exact path scales h/2 below 2^(emax − 2) with |a| < 4 (a wider L: Ha < 2^256 anyway).
    N3. Geometric discriminant B² − AC = |a|²·D, D = r²A − P², P = w·s (Ray Tracing Gems, ch. 7; pbrt-v4
        cylinders): no difference of large squares for far origins.
    N4. Stable root pair q = −(B + sgn(B)√(|a|²D)), t = q/A and C/q (Numerical Recipes §5.6); caps by clipping
