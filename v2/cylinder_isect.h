@@ -986,12 +986,12 @@ static inline int CYL__P(validate)(const CYL__N(ray) *ray, const CYL__N(cylinder
     return (opts & ~CYL__SUPPORTED) != 0u ? CYL_E_OPTION : 0;
 }
 
-/* The frame of valid input scaled into the range (N2): lengths by 2^-kl (h/2 below 2^(emax − 2): Ha, |a|
-   < 4, finite), d by 2^-kd, a by 2^-ka (exact); o − c exactly as a pair, halved where it overflows. */
+/* The frame of valid input scaled into the range (N2): lengths by 2^-kl (a finite h/2 below 2^(emax − 2),
+   else clamped, raised; Ha finite, |a| < 4), d by 2^-kd, a by 2^-ka; o − c exactly, halved where it overflows. */
 static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl)
 {
     CYL__L wr[3], m;
-    int j = 0, kl, kd, ka, kh, i;
+    int j = 0, kl, kd, ka, kh, kr, i;
     for (i = 0; i < 3; i++) /* halved (exact) only where o − c overflows: small parts stay */
         if (!(CYL__P(abs)((CYL__L)ray->o[i] - (CYL__L)cyl->c[i]) <= CYL__LMAX)) j = 1;
     for (i = 0; i < 3; i++) { /* o − c = wr + f->wl exactly */
@@ -1001,7 +1001,8 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     for (i = 0; i < 3; i++) f->d[i] = (CYL__L)ray->d[i], f->a[i] = (CYL__L)cyl->a[i];
     m = CYL__P(max)(CYL__P(amax)(wr), CYL__LT(scale)((CYL__L)cyl->r, -j));
     kl = (m > 0 ? CYL__LT(expo)(m) : 0) + j, kh = CYL__LT(expo)((CYL__L)cyl->h) - CYL__IFL(1021, 125);
-    kl = kh > kl && (CYL__L)cyl->h <= CYL__LMAX ? kh : kl; /* finite h: h/2 below 2^(emax − 2) */
+    kr = CYL__LT(expo)((CYL__L)cyl->r) + CYL__IFL(200, 30); /* a finite h/2 below 2^(emax − 2), if r allows */
+    if ((CYL__L)cyl->h <= CYL__LMAX && kh > kl) kl = kh < kr ? kh : kr > kl ? kr : kl;
     kd = CYL__LT(expo)(CYL__P(amax)(f->d)), ka = CYL__LT(expo)(CYL__P(amax)(f->a));
     for (i = 0; i < 3; i++) {
         f->w[i] = CYL__LT(scale)(wr[i], j - kl), f->wl[i] = CYL__LT(scale)(f->wl[i], j - kl);
@@ -1012,12 +1013,12 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     m = CYL__LT(scale)((CYL__L)CYL__RMAX, -f->et); /* R's largest t */
     f->tmin = CYL__P(max)(CYL__LT(scale)((CYL__L)ray->tmin, -f->et), -m), f->rmin = (CYL__L)ray->tmin;
     f->tmax = CYL__P(min)(CYL__LT(scale)((CYL__L)ray->tmax, -f->et), m), f->rmax = (CYL__L)ray->tmax;
-    f->cold = f->exact = 1;
+    f->cold = 1, f->exact = !(f->H > CYL__LMAX / 4 && (CYL__L)cyl->h <= CYL__LMAX), f->H = f->exact ? f->H : CYL__LMAX / 4;
 }
 
-/* The exact path: validates, scales, answers on the same decisions; ratios out of range even
-   scaled (double: r below 2^-300, h/2 below 2^-600 |o − c|) are answered raised, t_err = inf.
-   fs: the caller's frame to fill, which the caller answers (CYL__HANDBACK; CYL__DOUBT), else NULL. */
+/* The exact path: validates, scales, answers on the same decisions; ratios out of range even scaled
+   (double: r below 2^-300, h/2 below 2^-600 |o − c| or above 2^1220 r) are answered raised (h/2 clamped),
+   t_err = inf. fs: the caller's frame to fill, which the caller answers (CYL__HANDBACK; CYL__DOUBT), else NULL. */
 CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                            int want, CYL__N(hit) *hits, CYL__P(frame) *fs)
 {
@@ -1025,8 +1026,8 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
     int rc = CYL__P(validate)(ray, cyl, opts);
     if (rc) return rc;
     CYL__P(load_scaled)(f, ray, cyl);
-    while (!CYL__P(derive)(f)) { /* one call: it is inlined once */
-        if (!f->exact) return CYL_MISS;
+    while (!CYL__P(derive)(f)) { /* one call: it is inlined once; rc (0 here) counts the raise */
+        if (rc++) return CYL_MISS;
         f->r = CYL__P(max)(f->r, CYL__LSQRT(CYL__COLD_LO) * 2), f->H = CYL__P(max)(f->H, CYL__COLD_LO * 2), f->exact = 0;
     }
     f->par = CYL__P(parallel)(f) <= 0;
@@ -1194,7 +1195,6 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        step (polish, out of line from the caller's inputs, so that the hot frame stays in registers): 36 ulps
        on the hot path, the tier promises 2; the float API's, computed in double, is within 2^-29 already.
        Helper bodies take CYL_PRECISE calls out of line: the float API's in double where it computes in float;
-       on x86-64 built without the FMA, both APIs' built with it where the CPU has it (CYL_FMA_DISPATCH; not
-       the double API's occluded): one instruction per exact product, nothing contracted or vectorized, the
-       same bits.
+       on x86-64 built without the FMA, both APIs' built with it where the CPU has it (CYL_FMA_DISPATCH; not the
+       double API's occluded): one instruction per exact product, nothing contracted or vectorized, same bits.
 */
