@@ -549,9 +549,9 @@ CYL__INL void CYL__P(load)(CYL__P(frame) *f, const CYL__N(ray) *ray, const CYL__
 
 CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f);
 /* Everything the decisions use, from s = a × d and m = a × w (N1), and the range test (N2) on derived
-   values: r|a|, r²|a|², |a|²|d|², Ha and (hot path) r²A and the steep margin at least HOT_LO (exact path:
-   COLD_LO); |a|²(|w|² + r²), |a|²|d|² and r²A (>= D) summed at most HOT_HI (Ha: no test, N2). Every NaN,
-   infinity, zero or negative of o, d, c, a, r, h fails it. */
+   values: r, r²|a|², Ha and (hot path) r²A and the margin at least HOT_LO (exact path: COLD_LO; |a|²|d|²
+   is by the margin, or by the exact path's scale at least 1); |a|²(|w|² + r²), |a|²|d|² and r²A (>= D)
+   summed at most HOT_HI (Ha: no test, N2). Every NaN, infinity, zero or negative of o, d, c, a, r, h fails it. */
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
     CYL__L ml[3], lo;
@@ -581,7 +581,7 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
     f->D = f->r2 * f->A - f->P * f->P; /* B² − AC = |a|²D (N3) */
     f->sqaa = CYL__LSQRT(f->aa), f->Ha = f->H * f->sqaa;
     /* min passes a NaN on only as its second operand (h's is Ha's); the sum passes every one */
-    lo = CYL__P(min)(CYL__P(min)(f->r * f->sqaa, f->r2aa), CYL__P(min)(f->ad, f->Ha));
+    lo = CYL__P(min)(CYL__P(min)(f->r, f->r2aa), f->Ha);
     /* the hot path's margin for the exact path: parallel rays and, unless L makes the inputs'
        products exact, those whose s or m loses 8 bits (N6): d or o − c within 2^-8 of the axis */
     if (!f->cold) lo = CYL__P(min)(CYL__P(min)(CYL__WIDE ? CYL__P(parallel)(f) :
@@ -590,12 +590,10 @@ CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 }
 
 /* ------------------------------------------------------------------ decisions */
-/* Parallel (N7): sin²(d, a) = A/(|a|²|d|²) at most the tolerance's square; as a margin, the
-   ray is parallel where it is <= 0. */
+/* Parallel (N7): sin²(d, a) = A/(|a|²|d|²) at most the tolerance's square; as a margin: where <= 0. */
 CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f) { return f->A / ((CYL__L)CYL__PARA * (CYL__L)CYL__PARA) - f->ad; }
 
-/* The wall (N3, N6): 0 the ray line misses the infinite tube, 1 a tangent contact (e within the
-   band), 2 two crossings; e = D/(r²A). */
+/* The wall (N3, N6): 0 the line misses the infinite tube, 1 a tangent contact (e = D/(r²A) in the band), 2 two. */
 CYL__INL int CYL__P(classify_wall)(const CYL__P(frame) *f)
 { CYL__L band = (CYL__L)CYL__TANG * (f->r2 * f->A); return f->D > band ? 2 : f->D >= -band; }
 
@@ -631,8 +629,8 @@ CYL__INL int CYL__P(in_slab)(const CYL__P(frame) *f, const CYL__L v[4], const CY
 /* N9: x and y not certainly farther apart than their bounds' sum (a NaN bound certifies none). */
 CYL__INL int CYL__P(near)(CYL__L x, CYL__L ex, CYL__L y, CYL__L ey)
 { return !(CYL__P(abs)(x - y) > ex + ey); }
-/* The t range, ends included; run and load_scaled keep it within R's (a t beyond is no hit). */
-CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t) { return !(t < f->tmin) && !(t > f->tmax); }
+/* The t range, ends included (a NaN end: none); run and load_scaled keep it within R's (beyond: no hit). */
+CYL__INL int CYL__P(in_range)(const CYL__P(frame) *f, CYL__L t) { return t >= f->tmin && t <= f->tmax; }
 
 /* Crossing k (0 entry, 1 exit) of the wall roots and the slab v (N4): the open tube keeps a
    wall crossing inside the slab; the capped solid clips the wall interval with the slab (entry
@@ -1042,8 +1040,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
 CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                          int want, CYL__N(hit) *hits)
 {
-    CYL__P(frame) f; /* filled without loops: gcc then keeps the frame in registers */
-    int ok;
+    CYL__P(frame) f; int ok; /* f filled without loops: gcc then keeps the frame in registers */
 #ifdef CYL__HANDOFF
     if ((opts & CYL_PRECISE) && CYL__HANDOFF_IF(want)) return CYL__HANDOFF(out)(ray, cyl, opts, want, hits);
 #endif
@@ -1068,13 +1065,14 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
 #else
     f.tmin = (CYL__L)ray->tmin, f.tmax = (CYL__L)ray->tmax;
 #endif
-    if (!ok || !(f.tmin <= f.tmax) || (opts & ~CYL__SUPPORTED) != 0u)
+    if (!ok || ((CYL__WIDE || CYL__HANDBACK) && !(f.tmin <= f.tmax)) || (opts & ~CYL__SUPPORTED) != 0u)
         ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__HANDBACK ? &f : NULL);
     else {
         if (CYL__WIDE) /* t representable in R: in the range (in_range) */
             f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);
         ok = CYL__P(answer)(ray, cyl, &f, opts, want, hits, 0);
-        if (ok == CYL__DOUBT) ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__HANDBACK ? &f : NULL);
+        if (ok == CYL__DOUBT || (!CYL__WIDE && !CYL__HANDBACK && !ok && !(f.tmin <= f.tmax))) /* N2 */
+            ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__HANDBACK ? &f : NULL);
     }
     return CYL__HANDBACK && ok == CYL__DOUBT ? CYL__P(answer)(ray, cyl, &f, opts, want, hits, 1) : ok;
 }
@@ -1133,15 +1131,17 @@ CYL_DEF CYL__N(cylinder) CYL__N(from_segment)(const CYL__R p0[3], const CYL__R p
        m·s, C = m·m − r²|a|², z0 = a·w, ζ = a·d, Ha = (h/2)|a|, formed in pairs (s, m), (ζ, z0), (A, B), (P,
        |m|²): vectors where the compiler has them, one instruction for two, the same bits. The exact path forms
        s and m with Kahan's FMA difference of products (Jeannerod, Louvet, Muller, Math. Comp. 82, 2013), 2u each.
-   N2. Range: instead of validating 16 inputs the hot path tests |a|²|d|², r²|a|², r²A (else D can be
-       subnormal), Ha and |a|²(|w|² + r²) against one range, [2^-300, 2^450] in double: the largest products
-       the bounds form, such as |a|²D <= r²|a|²·|a|²|d|², stay below 2^900. Every NaN, infinity, zero or
-       out-of-range input fails it and goes to the exact path, which validates in the documented order (unless
-       CYL_TRUSTED) and scales lengths, d and a by powers of two (exact: its answers to a scene scaled by 2^k
-       are the same bits scaled; the hot path's, without N8's step, agree within t_err). Ha = ∞ for a finite h
-       changes no answer of the hot path: |a||w|, r|a| <= √HOT_HI and sin(d, a) >= 2^-8 keep |a| times a wall
-       point's axial coordinate below 2^10·√HOT_HI, all inside the slab (−∞, ∞) it gives, as inside the true
-       one; the exact path scales h/2 below 2^(emax − 2) with |a| < 4 (a wider L: Ha < 2^256 anyway).
+   N2. Range: instead of validating 16 inputs the hot path tests r²|a|², r²A (else D can be subnormal), Ha,
+       |a|²(|w|² + r²) and (through the steep or parallel margin) |a|²|d|² against one range, [2^-300, 2^450]
+       in double: the largest products the bounds form, such as |a|²D <= r²|a|²·|a|²|d|², stay below 2^900.
+       Every NaN, infinity, zero or out-of-range input fails it and goes to the exact path, which validates in
+       the documented order (unless CYL_TRUSTED) and scales lengths, d and a by powers of two (exact: its
+       answers to a scene scaled by 2^k are the same bits scaled; the hot path's, without N8's step, agree
+       within t_err). tmin <= tmax is tested there too where L is wider or the frame is handed back, else after
+       a miss only (a hit proves it): measured the cheaper. Ha = ∞ for a finite h changes no answer of the hot
+       path: |a||w|, r|a| <= √HOT_HI and sin(d, a) >= 2^-8 keep |a| times a wall point's axial coordinate
+       below 2^10·√HOT_HI, inside the slab (−∞, ∞) it gives as inside the true one; the exact path scales h/2
+       below 2^(emax − 2) with |a| < 4 (a wider L: Ha < 2^256 anyway).
    N3. Geometric discriminant B² − AC = |a|²·D, D = r²A − P², P = w·s (Ray Tracing Gems, ch. 7; pbrt-v4
        cylinders): no difference of large squares for far origins.
    N4. Stable root pair q = −(B + sgn(B)√(|a|²D)), t = q/A and C/q (Numerical Recipes §5.6); caps by clipping
