@@ -109,8 +109,8 @@
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
    t_err held the exact t on all 510,492 float and 521,305 double hits; nothing misclassified
    beyond the band, default or CYL_PRECISE. t on well-conditioned hits: CYL_PRECISE within
-   0.5 ulps in every family, both APIs, at 360 and 618 instructions per capped call (float,
-   double): 4.70 and 8.15 times the end-point routine's (REPORT, x86-64-v3; -O2: 3.15, 5.23).
+   0.5 ulps in every family, both APIs, at 358 and 615 instructions per capped call (float,
+   double): 4.67 and 8.11 times the end-point routine's (REPORT, x86-64-v3; -O2: 3.11, 5.18).
    Default: float within 0.5 ulps; double within 0.5 on the tiny and huge families (2^∓400:
    the exact path's N8 steps), on the hot path within 7 ulps on the well family's walls, 14.4
    on its caps (z0 + Ha cancels, N6), 271 for origins far along the axis (thin). Per unit of
@@ -230,6 +230,7 @@
    drops (double)(float) round trips that a caller's conversions and ours pair up (NUMERICS). */
 #if defined(__GNUC__) || defined(__clang__)
 #define CYL__B(f) __builtin_##f
+#define CYL__HUGE __builtin_huge_val()
 #define CYL__LAUNDER(p) __asm__("" : "+r"(p))
 #if defined(__x86_64__) || defined(__i386__)
 #define CYL__OPAQUE(x) __asm__("" : "+x"(x))
@@ -247,6 +248,7 @@ typedef struct cyl__float2 { float v[2]; } cyl__float2;
 #include <math.h>
 #include <string.h>
 #define CYL__B(f) f
+#define CYL__HUGE HUGE_VAL
 #define CYL__LAUNDER(p) (void)0
 #endif
 #if defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 8) /* gcc -O2 keeps 3-trip loops */
@@ -369,7 +371,7 @@ CYL_DEF const char *cyl_strerror(int code)
 #define CYL__HOT_LO CYL__IFL(4.9090934652977266e-91, 8.67361738e-19f) /* range, N2: 2^-300, 2^-60 */
 #define CYL__HOT_HI CYL__IFL(2.9073548971824276e135, 1.15292150e18f) /* 2^450, 2^60 */
 #define CYL__COLD_LO CYL__IFL(2.4099198651028841e-181, 1.32348898e-23f) /* scaled r²|a|²: 2^-600, 2^-76 */
-#define CYL__LINF (CYL__LMAX * 2)
+#define CYL__LINF ((CYL__L)CYL__HUGE) /* not LMAX * 2: gcc computes that at run time */
 /* The certified layer runs (N9): CYL_PRECISE asked for and compiled in (it folds away
    without, opts constant or not); what answer returns when it is not sure. */
 #define CYL__CERT(f, opts) (((opts) & CYL__SUPPORTED & CYL_PRECISE) && !(f)->cold)
@@ -554,9 +556,8 @@ CYL__INL CYL__L CYL__P(parallel)(const CYL__P(frame) *f);
    summed at most HOT_HI (Ha: no test, N2). Every NaN, infinity, zero or negative of o, d, c, a, r, h fails it. */
 CYL__INL int CYL__P(derive)(CYL__P(frame) *f)
 {
-    CYL__L ml[3], lo;
+    CYL__L ml[3], lo; int i;
     CYL__P(pair) dw[3], sm[3], q[3], z, ab, pm; /* lanes: (d, w) give (s, m) */
-    int i;
     dw[0] = CYL__P(pr)(f->d[0], f->w[0]), dw[1] = CYL__P(pr)(f->d[1], f->w[1]), dw[2] = CYL__P(pr)(f->d[2], f->w[2]);
     if (f->cold) { /* s, m to 2u each; w = w + wl exactly there */
         CYL__P(cross_exact)(f->a, f->d, f->s), CYL__P(cross_exact)(f->a, f->w, f->m);
@@ -881,8 +882,7 @@ CYL__INL void CYL__P(norm_a)(const CYL__P(frame) *f, CYL__L sa[2], CYL__L ra[3])
 CYL__OUT CYL__L CYL__P(resid)(const CYL__P(frame) *f, const CYL__L ra[3], CYL__L t, CYL__L *gp)
 {
     CYL__L xh[3], xl[3], yh, yl, g = 0;
-    CYL__P(acc) q, F;
-    int i;
+    CYL__P(acc) q, F; int i;
     F.s = ra[0], F.c = ra[1] - ra[2];
     CYL__UNROLL8 for (i = 0; i < 3; i++) { /* x = w + t·d as pairs xh + xl (w exact as w + wl) */
         q.s = f->w[i], q.c = f->wl[i], CYL__P(acc_mul)(&q, t, f->d[i]);
