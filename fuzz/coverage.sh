@@ -12,7 +12,7 @@ cov=$1; bin=$2; prof=$3; out=$4; hdr=${5:-cylinder_isect.h}
 # [True: n, False: m]"; a direction counts as missed only where every instance's count is 0.
 # Each is printed with its source line (the last numbered line printed above it).
 awk '
-  /^ *[0-9]+\|/ { split($0, p, "|"); ln = p[1] + 0; src = p[3]; sub(/^ +/, "", src); next }
+  /^ *[0-9]+\|/ { split($0, p, "|"); src = p[3]; sub(/^ +/, "", src); next }
   /Branch \(/ {
     match($0, /Branch \([0-9]+:[0-9]+\)/); where = substr($0, RSTART + 8, RLENGTH - 9);
     if (!(where in line)) { line[where] = src; order[++n] = where }

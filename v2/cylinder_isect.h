@@ -1040,7 +1040,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
 CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, unsigned opts,
                          int want, CYL__N(hit) *hits)
 {
-    CYL__P(frame) f; int ok; /* f filled without loops: gcc then keeps the frame in registers */
+    CYL__P(frame) f; int ok, tfirst = CYL__WIDE || CYL__HANDBACK; /* tfirst: tmin <= tmax up front, else on a miss (N2) */
 #ifdef CYL__HANDOFF
     if ((opts & CYL_PRECISE) && CYL__HANDOFF_IF(want)) return CYL__HANDOFF(out)(ray, cyl, opts, want, hits);
 #endif
@@ -1065,13 +1065,13 @@ CYL__INL int CYL__P(run)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, un
 #else
     f.tmin = (CYL__L)ray->tmin, f.tmax = (CYL__L)ray->tmax;
 #endif
-    if (!ok || ((CYL__WIDE || CYL__HANDBACK) && !(f.tmin <= f.tmax)) || (opts & ~CYL__SUPPORTED) != 0u)
+    if (!ok || (tfirst && !(f.tmin <= f.tmax)) || (opts & ~CYL__SUPPORTED) != 0u)
         ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__HANDBACK ? &f : NULL);
     else {
         if (CYL__WIDE) /* t representable in R: in the range (in_range) */
             f.tmin = CYL__P(max)(f.tmin, -(CYL__L)CYL__RMAX), f.tmax = CYL__P(min)(f.tmax, (CYL__L)CYL__RMAX);
         ok = CYL__P(answer)(ray, cyl, &f, opts, want, hits, 0);
-        if (ok == CYL__DOUBT || (!CYL__WIDE && !CYL__HANDBACK && !ok && !(f.tmin <= f.tmax))) /* N2 */
+        if (ok == CYL__DOUBT || (!tfirst && !ok && !(f.tmin <= f.tmax)))
             ok = CYL__P(cold)(ray, cyl, opts, want, hits, CYL__HANDBACK ? &f : NULL);
     }
     return CYL__HANDBACK && ok == CYL__DOUBT ? CYL__P(answer)(ray, cyl, &f, opts, want, hits, 1) : ok;
