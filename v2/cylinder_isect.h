@@ -486,8 +486,8 @@ static void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l);
 static CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap, CYL__L *lo);
 #endif
 
-/* One crossing of the ray with the surface; h: ∓√(|a|²D) at a wall (entry −, exit +). */
-typedef struct CYL__P(cross) { CYL__L t, h; int part, ok, doubt; unsigned flags; } CYL__P(cross);
+/* A crossing; h: ∓√(|a|²D) at a wall (entry −, exit +); e: the certified layer's bound on t (N9), or 0. */
+typedef struct CYL__P(cross) { CYL__L t, h, e; int part, ok, doubt; unsigned flags; } CYL__P(cross);
 
 /* ------------------------------------------------------------------ small tools */
 CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return CYL__LABS(x); }
@@ -642,7 +642,7 @@ CYL__ALWAYS CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts
 {
     CYL__P(cross) x;
     CYL__L ex = e ? e[k] : 0;
-    x.t = v[k], x.h = k ? sq : -sq, x.part = CYL_SIDE, x.flags = (k ? CYL_F_INSIDE : 0u) | tan;
+    x.t = v[k], x.h = k ? sq : -sq, x.e = ex, x.part = CYL_SIDE, x.flags = (k ? CYL_F_INSIDE : 0u) | tan;
     x.ok = CYL__P(in_slab)(f, v, l, k);
     x.doubt = e && (CYL__P(near)(v[k], ex, v[2], e[2]) || CYL__P(near)(v[k], ex, v[3], e[3]));
     if (!x.ok && (opts & CYL_CAPS) && (k ? CYL__P(before)(f, v, l, 3, 1) && !CYL__P(before)(f, v, l, 3, 0)
@@ -662,24 +662,24 @@ CYL__ALWAYS CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts
 
 /* ------------------------------------------------------------------ output and bound */
 /* The plain layer's error (N9): its quadratic's at t is at most noise·(S + t²|a|²|d|²), S =
-   |a|²(|w|² + r²); a wall root t's, h = √(|a|²D), root_bound where that is below h/A. */
+   |a|²(|w|² + r²); a wall root t's, h = √(|a|²D), root_bound (k = noise) where that is below h/A. */
 CYL__INL CYL__L CYL__P(noise)(const CYL__P(frame) *f)
 { return 128 * CYL__LU * (1 + CYL__LSQRT(f->ad / f->A)); }
-CYL__INL CYL__L CYL__P(root_bound)(const CYL__P(frame) *f, CYL__L t, CYL__L h)
-{ return CYL__P(noise)(f) * (f->aww + f->r2aa + t * t * f->ad) / h + 4 * CYL__LU * CYL__P(abs)(t); }
+CYL__INL CYL__L CYL__P(root_bound)(const CYL__P(frame) *f, CYL__L k, CYL__L t, CYL__L h)
+{ return k * (f->aww + f->r2aa + t * t * f->ad) / h + 4 * CYL__LU * CYL__P(abs)(t); }
 CYL__INL int CYL__P(first_order)(const CYL__P(frame) *f, CYL__L e, CYL__L h) { return e * f->A <= h; }
 
-/* t_err of a wall crossing (N5): root_bound on a wider L's hot path where far below R's ulp,
-   else from the residual F = |y|² − r²|a|² and G = y·s at t (y = m + t·s) and bounds EF, EG
-   on their rounding: (|F| + EF)/(|G| − EG) on the near branch, else the product-of-roots one. */
-CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x)
+/* t_err of a wall crossing (N5): root_bound on a wider L's hot path where far below R's ulp (cert:
+   the certified layer's, x->e), else from the residual F = |y|² − r²|a|², G = y·s at t (y = m + t·s)
+   and bounds EF, EG on their rounding: (|F| + EF)/(|G| − EG) near, else the product-of-roots one. */
+CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x, int cert)
 {
     const CYL__L u = CYL__LU;
     CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb, nd;
     if (CYL__WIDE && !f->cold) {
         const CYL__L h = CYL__P(abs)(x->h);
-        Gb = CYL__P(root_bound)(f, x->t, h); /* first order, and 2^-7 of R's ulp of t */
-        if (CYL__P(first_order)(f, Gb, h) && Gb <= CYL__P(abs)(x->t) * ((CYL__L)CYL__IFR(DBL_EPSILON, FLT_EPSILON) / 128))
+        Gb = cert ? x->e : CYL__P(root_bound)(f, CYL__P(noise)(f), x->t, h); /* first order, 2^-7 of R's ulp */
+        if ((cert || CYL__P(first_order)(f, Gb, h)) && Gb <= CYL__P(abs)(x->t) * ((CYL__L)CYL__IFR(DBL_EPSILON, FLT_EPSILON) / 128))
             return Gb;
     }
     nd = CYL__LSQRT(f->ad); /* >= |s|: ad is A plus a square */
@@ -738,7 +738,7 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl, 
     CYL__L n[3] = {0, 0, 0}, t = x->t, err = CYL__LINF, v, vlim = 0;
     CYL__R tr, vr, er;
     const int side = !(opts & CYL_CAPS) || x->part == CYL_SIDE; /* the open tube emits walls alone */
-    if (!(opts & CYL_NO_ERRBOUND)) err = side ? CYL__P(bound_wall)(f, x) : CYL__P(bound_cap)(f, x);
+    if (!(opts & CYL_NO_ERRBOUND)) err = side ? CYL__P(bound_wall)(f, x, CYL__CERT(f, opts)) : CYL__P(bound_cap)(f, x);
     if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, cyl, x, opts, side, n);
     v = side ? CYL__P(axial_v)(f, t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
     if (f->cold || CYL__WIDE) { /* h/2 within R's range; in R itself rounded toward 0 (R's subnormals) */
@@ -767,18 +767,18 @@ CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl, 
 /* ------------------------------------------------------------------ certificates */
 /* The tangent band: 1 unless D lies beyond the band's edges by more than its bound (a contact
    inside the band is the exact path's: its roots move by u/√e). */
-CYL__INL int CYL__P(band_doubt)(const CYL__P(frame) *f)
+CYL__INL int CYL__P(band_doubt)(const CYL__P(frame) *f, CYL__L k)
 {
-    CYL__L band = (CYL__L)CYL__TANG * (f->r2 * f->A), eD = CYL__P(noise)(f) * (f->aww + f->r2aa) * (f->A / f->aa);
+    CYL__L band = (CYL__L)CYL__TANG * (f->r2 * f->A), eD = k * (f->aww + f->r2aa) * (f->A / f->aa);
     return !(f->D - band > eD) && !(f->D + band < -eD);
 }
 
 /* Bounds e on the wall roots and the slab ends v (N9); 1 where one is not first order. */
-CYL__INL int CYL__P(bounds)(const CYL__P(frame) *f, const CYL__L v[4], CYL__L sq, CYL__L e[4])
+CYL__INL int CYL__P(bounds)(const CYL__P(frame) *f, CYL__L k, const CYL__L v[4], CYL__L sq, CYL__L e[4])
 {
     const CYL__L u = CYL__LU, z = CYL__P(abs)(f->zeta);
     const CYL__L es = 64 * u * (CYL__LSQRT(f->aww) + f->Ha) / z, ed = 64 * u * CYL__LSQRT(f->ad) / z;
-    e[0] = CYL__P(root_bound)(f, v[0], sq), e[1] = CYL__P(root_bound)(f, v[1], sq);
+    e[0] = CYL__P(root_bound)(f, k, v[0], sq), e[1] = CYL__P(root_bound)(f, k, v[1], sq);
     e[2] = CYL__P(abs)(v[2]) <= CYL__LMAX ? es + CYL__P(abs)(v[2]) * (ed + 2 * u) : 0;
     e[3] = CYL__P(abs)(v[3]) <= CYL__LMAX ? es + CYL__P(abs)(v[3]) * (ed + 2 * u) : 0;
     return !(CYL__P(first_order)(f, CYL__P(max)(e[0], e[1]), sq) && ed <= CYL__K(0.5)); /* and ζ */
@@ -799,18 +799,18 @@ CYL__OUT CYL__L CYL__P(polish_hot)(const CYL__N(ray) *ray, const CYL__N(cylinder
 CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, const CYL__P(frame) *f,
                             unsigned opts, int want, CYL__N(hit) *hits, int compact)
 {
-    CYL__L v[4], sq = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : NULL, l[4] = {0, 0, 0, 0};
+    CYL__L v[4], sq = 0, k = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : NULL, l[4] = {0, 0, 0, 0};
     CYL__P(cross) x, y;
     int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0, pol, alone;
     unsigned tan = kind == 1 ? CYL_F_TANGENT : 0u;
-    if (e && CYL__P(band_doubt)(f)) return CYL__DOUBT;
+    if (e && (k = CYL__P(noise)(f), CYL__P(band_doubt)(f, k))) return CYL__DOUBT;
     if (kind == 0 || (tan && (opts & CYL_NO_TANGENT))) return 0;
     if (!f->par) sq = CYL__P(wall_roots)(f, v);
     else v[0] = -CYL__LINF, v[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
     CYL__P(slab)(f, &v[2]);
     if ((CYL__SUPPORTED & CYL_PRECISE) && f->cold && f->exact) CYL__X(refine)(f, v, opts & CYL_PRECISE ? l : NULL); /* N8 */
     pol = e && !CYL__WIDE && want; /* the double API's t to an ulp */
-    if (e && CYL__P(bounds)(f, v, sq, e)) return CYL__DOUBT;
+    if (e && CYL__P(bounds)(f, k, v, sq, e)) return CYL__DOUBT;
     x = CYL__P(crossing)(f, opts, 0, v, e, l, sq, tan), alone = x.ok && want < 2; /* entry, then exit: no loop, so */
     if (e) { /* both certain, whatever the entry point: */ /* that k and the arrays fold away */
         y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan); /* each answers on one path */
@@ -824,7 +824,7 @@ CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         if (want) CYL__P(emit)(f, cyl, &x, opts, hits);
         return 1;
     }
-    if (alone) y.t = x.t, y.h = x.h, y.part = x.part, y.ok = x.ok, y.flags = x.flags; /* not y = x (RV32: memcpy) */
+    if (alone) y.t = x.t, y.h = x.h, y.e = x.e, y.part = x.part, y.ok = x.ok, y.flags = x.flags; /* not y = x (RV32: memcpy) */
     else if (!e) y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan);
     if (x.ok && want == 2) CYL__P(emit)(f, cyl, &x, opts, &hits[n++]);
     if (y.ok && want) CYL__P(emit)(f, cyl, &y, opts, &hits[n]);
