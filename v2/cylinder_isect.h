@@ -886,7 +886,7 @@ CYL__OUT CYL__L CYL__P(resid)(const CYL__P(frame) *f, const CYL__L ra[3], CYL__L
     F.s = ra[0], F.c = ra[1] - ra[2];
     CYL__UNROLL8 for (i = 0; i < 3; i++) { /* x = w + t·d as pairs xh + xl (w exact as w + wl) */
         q.s = f->w[i], q.c = f->wl[i], CYL__P(acc_mul)(&q, t, f->d[i]);
-        xh[i] = CYL__P(acc_pair)(&q, &xl[i]);
+        xh[i] = q.s, xl[i] = q.c; /* as summed: a × xl is formed apart */
     }
     CYL__UNROLL8 for (i = 0; i < 3; i++) { /* y = a × x, componentwise as a pair, into |y|² */
         const int i1 = i == 2 ? 0 : i + 1, i2 = i == 0 ? 2 : i - 1;
