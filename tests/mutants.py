@@ -115,7 +115,7 @@ MUTANTS_V2 = [
  ("exact path: plain D", "if ((CYL__SUPPORTED & CYL_PRECISE) && f->exact) CYL__X(exact_frame)(f);", "if (0) CYL__X(exact_frame)(f);"),
  ("certified: band never doubted", "if (e && (k = CYL__P(noise)(f), CYL__P(band_doubt)(f, k))) return CYL__DOUBT;",
   "if (e && (k = CYL__P(noise)(f), 0)) return CYL__DOUBT;"),
- ("certified: a crossing's bound lost for t_err", "x.t = v[k], x.h = k ? sq : -sq, x.e = ex,", "x.t = v[k], x.h = k ? sq : -sq, x.e = 0,"),
+ ("certified: t_err without the crossing's bound", "Gb = e ? e[x->flags & CYL_F_INSIDE ? 1 : 0] :", "Gb = e ? 0 :"),
  ("certified: rims never doubted", "x.doubt = e && (CYL__P(near)(v[k], ex, v[2], e[2]) || CYL__P(near)(v[k], ex, v[3], e[3]));", "x.doubt = 0;"),
  ("certified: t range never doubted", "if (e && x.ok) x.doubt |= CYL__P(near)(x.t, ex, f->tmin, 0)", "if (0) x.doubt |= CYL__P(near)(x.t, ex, f->tmin, 0)"),
  ("certified: no polish", "if (x.ok) x.t = CYL__P(polish_hot)(ray, cyl, x.t, x.part, sq / f->A);",

@@ -486,8 +486,8 @@ static void CYL__P(refine)(const CYL__P(frame) *f, CYL__L v[4], CYL__L *l);
 static CYL__L CYL__P(polish)(const CYL__P(frame) *f, CYL__L t, int part, CYL__L gap, CYL__L *lo);
 #endif
 
-/* A crossing; h: ∓√(|a|²D) at a wall (entry −, exit +); e: the certified layer's bound on t (N9), or 0. */
-typedef struct CYL__P(cross) { CYL__L t, h, e; int part, ok, doubt; unsigned flags; } CYL__P(cross);
+/* One crossing of the ray with the surface; h: ∓√(|a|²D) at a wall (entry −, exit +). */
+typedef struct CYL__P(cross) { CYL__L t, h; int part, ok, doubt; unsigned flags; } CYL__P(cross);
 
 /* ------------------------------------------------------------------ small tools */
 CYL__INL CYL__L CYL__P(abs)(CYL__L x) { return CYL__LABS(x); }
@@ -642,7 +642,7 @@ CYL__ALWAYS CYL__P(cross) CYL__P(crossing)(const CYL__P(frame) *f, unsigned opts
 {
     CYL__P(cross) x;
     CYL__L ex = e ? e[k] : 0;
-    x.t = v[k], x.h = k ? sq : -sq, x.e = ex, x.part = CYL_SIDE, x.flags = (k ? CYL_F_INSIDE : 0u) | tan;
+    x.t = v[k], x.h = k ? sq : -sq, x.part = CYL_SIDE, x.flags = (k ? CYL_F_INSIDE : 0u) | tan;
     x.ok = CYL__P(in_slab)(f, v, l, k);
     x.doubt = e && (CYL__P(near)(v[k], ex, v[2], e[2]) || CYL__P(near)(v[k], ex, v[3], e[3]));
     if (!x.ok && (opts & CYL_CAPS) && (k ? CYL__P(before)(f, v, l, 3, 1) && !CYL__P(before)(f, v, l, 3, 0)
@@ -669,17 +669,17 @@ CYL__INL CYL__L CYL__P(root_bound)(const CYL__P(frame) *f, CYL__L k, CYL__L t, C
 { return k * (f->aww + f->r2aa + t * t * f->ad) / h + 4 * CYL__LU * CYL__P(abs)(t); }
 CYL__INL int CYL__P(first_order)(const CYL__P(frame) *f, CYL__L e, CYL__L h) { return e * f->A <= h; }
 
-/* t_err of a wall crossing (N5): root_bound on a wider L's hot path where far below R's ulp (cert:
-   the certified layer's, x->e), else from the residual F = |y|² − r²|a|², G = y·s at t (y = m + t·s)
+/* t_err of a wall crossing (N5): root_bound on a wider L's hot path where far below R's ulp (e: the
+   certified layer's, entry then exit), else from the residual F = |y|² − r²|a|², G = y·s at t (y = m + t·s)
    and bounds EF, EG on their rounding: (|F| + EF)/(|G| − EG) near, else the product-of-roots one. */
-CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x, int cert)
+CYL__INL CYL__L CYL__P(bound_wall)(const CYL__P(frame) *f, const CYL__P(cross) *x, const CYL__L *e)
 {
     const CYL__L u = CYL__LU;
     CYL__L y[3], yy, F, G, ny, Ey, Fb, EG, EA, Gb, nd;
     if (CYL__WIDE && !f->cold) {
         const CYL__L h = CYL__P(abs)(x->h);
-        Gb = cert ? x->e : CYL__P(root_bound)(f, CYL__P(noise)(f), x->t, h); /* first order, 2^-7 of R's ulp */
-        if ((cert || CYL__P(first_order)(f, Gb, h)) && Gb <= CYL__P(abs)(x->t) * ((CYL__L)CYL__IFR(DBL_EPSILON, FLT_EPSILON) / 128))
+        Gb = e ? e[x->flags & CYL_F_INSIDE ? 1 : 0] : CYL__P(root_bound)(f, CYL__P(noise)(f), x->t, h); /* first order, 2^-7 of R's ulp */
+        if ((e || CYL__P(first_order)(f, Gb, h)) && Gb <= CYL__P(abs)(x->t) * ((CYL__L)CYL__IFR(DBL_EPSILON, FLT_EPSILON) / 128))
             return Gb;
     }
     nd = CYL__LSQRT(f->ad); /* >= |s|: ad is A plus a square */
@@ -731,14 +731,14 @@ CYL__INL CYL__L CYL__P(axial_v)(const CYL__P(frame) *f, CYL__L t)
 { CYL__L v = (f->z0 + t * f->zeta) / f->sqaa; return CYL__P(max)(-f->H, CYL__P(min)(v, f->H)); }
 
 /* The hit in the caller's units and type: t, t_err, v unscaled (exact path), t kept in range,
-   t_err widened by t's rounding into R and rounded up, v within h/2 after its rounding. */
-CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl, const CYL__P(cross) *x, unsigned opts,
+   t_err widened by t's rounding into R and rounded up, v within h/2 after its rounding. e: N9's bounds. */
+CYL__INL void CYL__P(emit)(const CYL__P(frame) *f, const CYL__N(cylinder) *cyl, const CYL__P(cross) *x, const CYL__L *e, unsigned opts,
                           CYL__N(hit) *hit)
 {
     CYL__L n[3] = {0, 0, 0}, t = x->t, err = CYL__LINF, v, vlim = 0;
     CYL__R tr, vr, er;
     const int side = !(opts & CYL_CAPS) || x->part == CYL_SIDE; /* the open tube emits walls alone */
-    if (!(opts & CYL_NO_ERRBOUND)) err = side ? CYL__P(bound_wall)(f, x, CYL__CERT(f, opts)) : CYL__P(bound_cap)(f, x);
+    if (!(opts & CYL_NO_ERRBOUND)) err = side ? CYL__P(bound_wall)(f, x, e) : CYL__P(bound_cap)(f, x);
     if (!(opts & CYL_NO_NORMAL)) CYL__P(normal)(f, cyl, x, opts, side, n);
     v = side ? CYL__P(axial_v)(f, t) : (x->part == CYL_CAP_HIGH ? f->H : -f->H);
     if (f->cold || CYL__WIDE) { /* h/2 within R's range; in R itself rounded toward 0 (R's subnormals) */
@@ -821,13 +821,13 @@ CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl,
         }
     }
     if (alone && !compact) {
-        if (want) CYL__P(emit)(f, cyl, &x, opts, hits);
+        if (want) CYL__P(emit)(f, cyl, &x, e, opts, hits);
         return 1;
     }
-    if (alone) y.t = x.t, y.h = x.h, y.e = x.e, y.part = x.part, y.ok = x.ok, y.flags = x.flags; /* not y = x (RV32: memcpy) */
+    if (alone) y.t = x.t, y.h = x.h, y.part = x.part, y.ok = x.ok, y.flags = x.flags; /* not y = x (RV32: memcpy) */
     else if (!e) y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan);
-    if (x.ok && want == 2) CYL__P(emit)(f, cyl, &x, opts, &hits[n++]);
-    if (y.ok && want) CYL__P(emit)(f, cyl, &y, opts, &hits[n]);
+    if (x.ok && want == 2) CYL__P(emit)(f, cyl, &x, e, opts, &hits[n++]);
+    if (y.ok && want) CYL__P(emit)(f, cyl, &y, e, opts, &hits[n]);
     return n + y.ok;
 }
 
