@@ -109,8 +109,8 @@
    `make report V=2` (MPFR reference, 6000 cases per family, caps on and off, seed 20261122):
    t_err held the exact t on all 510,492 float and 521,305 double hits; nothing misclassified
    beyond the band, default or CYL_PRECISE. t on well-conditioned hits: CYL_PRECISE within
-   0.5 ulps in every family, both APIs, at 341 and 609 instructions per capped call (float,
-   double): 4.46 and 8.04 times the end-point routine's (REPORT, x86-64-v3; -O2: 2.98, 5.15).
+   0.5 ulps in every family, both APIs, at 341 and 603 instructions per capped call (float,
+   double): 4.46 and 7.96 times the end-point routine's (REPORT, x86-64-v3; -O2: 2.98, 5.10).
    Default: float within 0.5 ulps; double within 0.5 on the tiny and huge families (2^∓400:
    the exact path's N8 steps), on the hot path within 7 ulps on the well family's walls, 14.4
    on its caps (z0 + Ha cancels, N6), 271 for origins far along the axis (thin). Per unit of
