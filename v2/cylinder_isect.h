@@ -799,11 +799,11 @@ CYL__OUT CYL__L CYL__P(polish_hot)(const CYL__N(ray) *ray, const CYL__N(cylinder
 CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, const CYL__P(frame) *f,
                             unsigned opts, int want, CYL__N(hit) *hits, int compact)
 {
-    CYL__L v[4], sq = 0, k = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : NULL, l[4] = {0, 0, 0, 0};
+    CYL__L v[4], sq = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : NULL, k = 0, l[4] = {0, 0, 0, 0};
     CYL__P(cross) x, y;
     int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0, pol, alone;
     unsigned tan = kind == 1 ? CYL_F_TANGENT : 0u;
-    if (e && (k = CYL__P(noise)(f), CYL__P(band_doubt)(f, k))) return CYL__DOUBT;
+    if (e) { k = CYL__P(noise)(f); if (CYL__P(band_doubt)(f, k)) return CYL__DOUBT; } /* k: N9's factor, once */
     if (kind == 0 || (tan && (opts & CYL_NO_TANGENT))) return 0;
     if (!f->par) sq = CYL__P(wall_roots)(f, v);
     else v[0] = -CYL__LINF, v[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
