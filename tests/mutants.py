@@ -113,7 +113,7 @@ MUTANTS_V2 = [
  ("exact path: no refinement", "if ((CYL__SUPPORTED & CYL_PRECISE) && f->cold && f->exact) CYL__X(refine)(f, v, opts & CYL_PRECISE ? l : NULL);",
   "if (0) CYL__X(refine)(f, v, opts & CYL_PRECISE ? l : NULL);"),
  ("exact path: plain D", "if ((CYL__SUPPORTED & CYL_PRECISE) && f->exact) CYL__X(exact_frame)(f);", "if (0) CYL__X(exact_frame)(f);"),
- ("certified: band never doubted", "if (CYL__P(band_doubt)(f, k)) return CYL__DOUBT;", "if (0) return CYL__DOUBT;"),
+ ("certified: band never doubted", "if (CYL__P(band_doubt)(f, nz)) return CYL__DOUBT;", "if (0) return CYL__DOUBT;"),
  ("certified: t_err without the crossing's bound", "Gb = e ? e[x->flags & CYL_F_INSIDE ? 1 : 0] :", "Gb = e ? 0 :"),
  ("certified: rims never doubted", "x.doubt = e && (CYL__P(near)(v[k], ex, v[2], e[2]) || CYL__P(near)(v[k], ex, v[3], e[3]));", "x.doubt = 0;"),
  ("certified: t range never doubted", "if (e && x.ok) x.doubt |= CYL__P(near)(x.t, ex, f->tmin, 0)", "if (0) x.doubt |= CYL__P(near)(x.t, ex, f->tmin, 0)"),

@@ -799,18 +799,18 @@ CYL__OUT CYL__L CYL__P(polish_hot)(const CYL__N(ray) *ray, const CYL__N(cylinder
 CYL__INL int CYL__P(answer)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, const CYL__P(frame) *f,
                             unsigned opts, int want, CYL__N(hit) *hits, int compact)
 {
-    CYL__L v[4], sq = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : NULL, k = 0, l[4] = {0, 0, 0, 0};
+    CYL__L v[4], sq = 0, eb[4], *e = CYL__CERT(f, opts) ? eb : NULL, nz = 0, l[4] = {0, 0, 0, 0};
     CYL__P(cross) x, y;
     int kind = f->par ? 2 : CYL__P(classify_wall)(f), n = 0, pol, alone;
     unsigned tan = kind == 1 ? CYL_F_TANGENT : 0u;
-    if (e) { k = CYL__P(noise)(f); if (CYL__P(band_doubt)(f, k)) return CYL__DOUBT; } /* k: N9's factor, once */
+    if (e) { nz = CYL__P(noise)(f); if (CYL__P(band_doubt)(f, nz)) return CYL__DOUBT; } /* N9's factor, once */
     if (kind == 0 || (tan && (opts & CYL_NO_TANGENT))) return 0;
     if (!f->par) sq = CYL__P(wall_roots)(f, v);
     else v[0] = -CYL__LINF, v[1] = CYL__LINF; /* no wall (N7): the slab alone bounds */
     CYL__P(slab)(f, &v[2]);
     if ((CYL__SUPPORTED & CYL_PRECISE) && f->cold && f->exact) CYL__X(refine)(f, v, opts & CYL_PRECISE ? l : NULL); /* N8 */
     pol = e && !CYL__WIDE && want; /* the double API's t to an ulp */
-    if (e && CYL__P(bounds)(f, k, v, sq, e)) return CYL__DOUBT;
+    if (e && CYL__P(bounds)(f, nz, v, sq, e)) return CYL__DOUBT;
     x = CYL__P(crossing)(f, opts, 0, v, e, l, sq, tan), alone = x.ok && want < 2; /* entry, then exit: no loop, so */
     if (e) { /* both certain, whatever the entry point: */ /* that k and the arrays fold away */
         y = CYL__P(crossing)(f, opts, 1, v, e, l, sq, tan); /* each answers on one path */
