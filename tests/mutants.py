@@ -172,7 +172,7 @@ MUTANTS_V2 = [
   "f->D = (f->B * f->B - f->A * (f->mm - f->r2aa)) / f->aa;"),
  ("exact path: a huge h/2 left unscaled (Ha overflows)", "if ((CYL__L)cyl->h <= CYL__LMAX && kh > kl) kl =",
   "if (0) kl ="),
- ("exact path: h/2's scale pushes r out of range", "kl = kh < kr ? kh : kr > kl ? kr : kl;", "kl = kh;"),
+ ("exact path: h/2's scale pushes r out of range", "kl = kr > kl ? kr : kl, kl = kl < kh ? kl : kh;", "kl = kh;"),
  ("exact path: h/2 beyond r's range not clamped", "f->H = f->exact ? f->H : CYL__LMAX / 4;", "f->H = f->H;"),
 ]
 

@@ -1000,7 +1000,7 @@ static inline void CYL__P(load_scaled)(CYL__P(frame) *f, const CYL__N(ray) *ray,
     m = CYL__P(max)(CYL__P(amax)(wr), CYL__LT(scale)((CYL__L)cyl->r, -j));
     kl = (m > 0 ? CYL__LT(expo)(m) : 0) + j, kh = CYL__LT(expo)((CYL__L)cyl->h) - CYL__IFL(1021, 125);
     kr = CYL__LT(expo)((CYL__L)cyl->r) + CYL__IFL(200, 30); /* a finite h/2 below 2^(emax − 2), if r allows */
-    if ((CYL__L)cyl->h <= CYL__LMAX && kh > kl) kl = kh < kr ? kh : kr > kl ? kr : kl;
+    if ((CYL__L)cyl->h <= CYL__LMAX && kh > kl) kl = kr > kl ? kr : kl, kl = kl < kh ? kl : kh; /* min(kh, max(kr, kl)) */
     kd = CYL__LT(expo)(CYL__P(amax)(f->d)), ka = CYL__LT(expo)(CYL__P(amax)(f->a));
     for (i = 0; i < 3; i++) {
         f->w[i] = CYL__LT(scale)(wr[i], j - kl), f->wl[i] = CYL__LT(scale)(f->wl[i], j - kl);
