@@ -99,6 +99,12 @@ $(UNITY_FETCHED)/unity.c:
 	@cp $(addprefix $(UNITY_FETCHED).download/whl/vyperling/c/,unity.c unity.h unity_internals.h) $(UNITY_FETCHED)/
 	@$(call unity_verify,$(UNITY_FETCHED)) || { rm -f $(UNITY_FETCHED)/unity*; exit 1; }
 
+# $(call write_if_changed,TEXT): a recipe line that writes TEXT into $@ only when it differs, so
+# that a file holding a build command (its rule depends on FORCE) is newer only when the command changed.
+write_if_changed = printf '%s\n' '$(1)' | cmp -s - $@ || printf '%s\n' '$(1)' > $@
+.PHONY: FORCE
+FORCE:
+
 .PHONY: unity
 unity: $(UNITY_C)
 	@$(call unity_verify,$(UNITY_SRC))

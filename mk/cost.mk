@@ -39,9 +39,9 @@ DEPS_GOALS_cost := cost cost-time
 # rewritten only when that changes (another COST_V2_DIR, other flags), which rebuilds it.
 define COST_BIN_RULES
 COST_CMD_$(1)-$(2) := $$(COST_GCC) $$(COST_WARN) $$(COST_OPT_$(2)) $$(COST_INC_$(1))
-$(COST_BUILD)/cost-$(1)-$(2).flags: cost-force
+$(COST_BUILD)/cost-$(1)-$(2).flags: FORCE
 	@mkdir -p $$(@D)
-	@printf '%s\n' '$$(COST_CMD_$(1)-$(2))' | cmp -s - $$@ || printf '%s\n' '$$(COST_CMD_$(1)-$(2))' > $$@
+	@$$(call write_if_changed,$$(COST_CMD_$(1)-$(2)))
 $(COST_BUILD)/cost-$(1)-$(2): $(COST_BUILD)/cost-$(1)-$(2).flags $(COST_DEPS) $(COST_HDRS_$(1))
 	$$(COST_CMD_$(1)-$(2)) $(COST_SRCS) -lm -o $$@
 endef
@@ -57,8 +57,7 @@ $(COST_BUILD)/insn-%.tsv: $(COST_BUILD)/cost-% bench/cost_report.py
 	@$(COST_REPORT) pair --key $* --cflags='$(COST_OPT_$(lastword $(subst -, ,$*)))' \
 	  $(COST_BUILD)/cg-$*/plan.txt $(COST_BUILD)/cg-$* > $@.tmp && mv $@.tmp $@
 
-.PHONY: cost cost-time cost-force
-cost-force:
+.PHONY: cost cost-time
 
 # Counted afresh on every call (a few seconds); the binaries are rebuilt only when needed.
 cost: deps

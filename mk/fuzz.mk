@@ -52,16 +52,15 @@ $(FUZZ_DIR)/cyl_ref-cov.o: ref/cyl_ref.c ref/cyl_ref.h $(HDR)
 # harness.flags holds the compile command and is rewritten only when it changes (another
 # FUZZ_ARCH or FUZZ_EXTRA), which rebuilds both harnesses.
 FUZZ_CMD := $(CLANG) $(FUZZ_CFLAGS) $(FUZZ_REF_DEF)
-$(FUZZ_DIR)/harness.flags: fuzz-force
+$(FUZZ_DIR)/harness.flags: FORCE
 	@mkdir -p $(@D)
-	@printf '%s\n' '$(FUZZ_CMD)' | cmp -s - $@ || printf '%s\n' '$(FUZZ_CMD)' > $@
+	@$(call write_if_changed,$(FUZZ_CMD))
 $(FUZZ_DIR)/fuzz_isect: fuzz/fuzz_isect.c $(FUZZ_HDRS) $(FUZZ_REF_OBJ_CLANG) $(FUZZ_DIR)/harness.flags
 	$(FUZZ_CMD) $< -x none $(FUZZ_REF_OBJ_CLANG) $(FUZZ_REF_LIBS) -lm -o $@
 $(FUZZ_DIR)/fuzz_grid: fuzz/fuzz_grid.c $(FUZZ_HDRS) $(FUZZ_REF_OBJ_CLANG) $(FUZZ_DIR)/harness.flags
 	$(FUZZ_CMD) $< -x none $(FUZZ_REF_OBJ_CLANG) $(FUZZ_REF_LIBS) -lm -o $@
 
-.PHONY: fuzz fuzz-build fuzz-seeds fuzz-merge fuzz-cov fuzz-replay fuzz-short fuzz-force
-fuzz-force:
+.PHONY: fuzz fuzz-build fuzz-seeds fuzz-merge fuzz-cov fuzz-replay fuzz-short
 fuzz-build: $(addprefix $(FUZZ_DIR)/,$(FUZZ_HARNESSES))
 
 # Each harness runs on a scratch corpus in build/ plus the committed one (new inputs never land in

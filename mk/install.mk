@@ -31,7 +31,7 @@ PC_INCLUDEDIR = $(patsubst $(PREFIX)/%,$${prefix}/%,$(INCLUDEDIR))
 INSTALL_FILES = $(INCLUDEDIR)/cylinder_isect.h $(PKGCONFIGDIR)/cylinder_isect.pc \
                 $(CMAKEDIR)/cylinder_isectConfig.cmake $(CMAKEDIR)/cylinder_isectConfigVersion.cmake
 
-.PHONY: install uninstall install-check install-files FORCE
+.PHONY: install uninstall install-check install-files
 DEPS_GOALS_install := install-check
 CHECK_TARGETS += install-check
 
@@ -43,7 +43,6 @@ $(INSTALL_GEN)/cylinder_isect.pc $(INSTALL_GEN)/cylinder_isectConfig.cmake $(INS
 	@sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@INCLUDEDIR@|$(PC_INCLUDEDIR)|g' -e 's|@CYL_VERSION@|$(CYL_VERSION)|g' \
 	  -e 's|@CYL_VERSION_MAJOR@|$(CYL_VERSION_MAJOR)|g' -e 's|@CYL_VERSION_NEXT_MAJOR@|$(CYL_VERSION_NEXT_MAJOR)|g' -e 's|@CYL_REL_INCLUDEDIR@|$(CYL_REL_INCLUDEDIR)|g' \
 	  cmake/$(@F).in >$@
-FORCE:
 
 install: $(INSTALL_GEN)/cylinder_isect.pc $(INSTALL_GEN)/cylinder_isectConfig.cmake $(INSTALL_GEN)/cylinder_isectConfigVersion.cmake
 	$(INSTALL) -d $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(PKGCONFIGDIR) $(DESTDIR)$(CMAKEDIR)
