@@ -21,7 +21,7 @@
 #                 earlier one failed, and `make check` ends with the list of the failed ones
 # Packages: mk/core.deps lists what `make test` needs (and every goal gets); mk/AREA.deps what
 # only AREA's goals need. A goal installs what is missing before any rule runs:
-#   DEPS_GOALS_<area>  the goals that need mk/<area>.deps (set by the fragment, or below)
+#   DEPS_GOALS_<area>  the goals that need mk/<area>.deps (set by the fragment)
 # `make check` installs every list; scripts/install-deps.sh TIER|AREA... does the same by hand.
 #
 # V=2 (`make test V=2`, default V=1): the same `make test` suite on $(V2_DIR)/cylinder_isect.h
@@ -153,8 +153,6 @@ CHECK_TARGETS :=
 # mk/fuzz.mk and mk/tests.mk add them when HOST_FMA is 1.
 HOST_FMA := $(shell grep -qw fma /proc/cpuinfo 2>/dev/null && test "$$(uname -m)" = x86_64 && echo 1)
 
-# The goals of fragments whose owners keep no list of their own.
-DEPS_GOALS_bench := report insn ablation
 -include mk/*.mk
 
 # ---------------------------------------------------------------- packages
