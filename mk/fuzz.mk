@@ -55,9 +55,7 @@ FUZZ_CMD := $(CLANG) $(FUZZ_CFLAGS) $(FUZZ_REF_DEF)
 $(FUZZ_DIR)/harness.flags: FORCE
 	@mkdir -p $(@D)
 	@$(call write_if_changed,$(FUZZ_CMD))
-$(FUZZ_DIR)/fuzz_isect: fuzz/fuzz_isect.c $(FUZZ_HDRS) $(FUZZ_REF_OBJ_CLANG) $(FUZZ_DIR)/harness.flags
-	$(FUZZ_CMD) $< -x none $(FUZZ_REF_OBJ_CLANG) $(FUZZ_REF_LIBS) -lm -o $@
-$(FUZZ_DIR)/fuzz_grid: fuzz/fuzz_grid.c $(FUZZ_HDRS) $(FUZZ_REF_OBJ_CLANG) $(FUZZ_DIR)/harness.flags
+$(FUZZ_DIR)/fuzz_%: fuzz/fuzz_%.c $(FUZZ_HDRS) $(FUZZ_REF_OBJ_CLANG) $(FUZZ_DIR)/harness.flags
 	$(FUZZ_CMD) $< -x none $(FUZZ_REF_OBJ_CLANG) $(FUZZ_REF_LIBS) -lm -o $@
 
 .PHONY: fuzz fuzz-build fuzz-seeds fuzz-merge fuzz-cov fuzz-replay fuzz-short
