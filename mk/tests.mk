@@ -18,7 +18,8 @@
 #             CYL_NO_FAST_PATH (not under V=2), with a hardware FMA (-mfma, where this
 #             machine has one), built for size (-Os, V=2 only), and with every entry point forced inline
 #             (tests/config/cfg_forced_inline.h; not under V=2, where that is the default)
-#   prereq    -ffast-math must stop the build at the header's #error (gcc and clang)
+#   prereq    -ffast-math (under V=2 also CYL_NO_FAST_PATH, CYL_INTERNAL) must stop the build at
+#             the header's #error (gcc and clang)
 # make check also builds and runs every topic alone (tests-topics: proves test-one's builds).
 
 TESTS_CFG_DIR := $(BUILD)/tests-config
@@ -133,14 +134,16 @@ $(eval $(call TESTS_CFG_RUNNER,fma_float_narrow,tests/test_float.c,-mfma -DCYL_F
 endif
 
 # Each compiler is one argument (under V=2 it carries -iquote); HDR is where the #error must be.
-$(TESTS_CFG_DIR)/fast_math.stamp: tests/config/cfg_fast_math.c tests/config/check-fast-math.sh $(HDR)
-	@CYL_HDR='$(HDR)' bash tests/config/check-fast-math.sh $@ '$(GCC)' '$(CLANG)'
+# v1 refuses -ffast-math; v2 also the configuration macros it dropped (its "Gone in v2").
+TESTS_REFUSED := -ffast-math$(if $(filter 2,$(V)),|-DCYL_NO_FAST_PATH|-DCYL_INTERNAL)
+$(TESTS_CFG_DIR)/refused.stamp: tests/config/cfg_refused.c tests/config/check-refused.sh $(HDR)
+	@CYL_HDR='$(HDR)' CYL_REFUSED='$(TESTS_REFUSED)' bash tests/config/check-refused.sh $@ '$(GCC)' '$(CLANG)'
 
 .PHONY: tests-config
-tests-config: $(TESTS_CFG_RUNNERS) $(TESTS_CFG_DIR)/fast_math.stamp
+tests-config: $(TESTS_CFG_RUNNERS) $(TESTS_CFG_DIR)/refused.stamp
 
 RUNNERS      += $(TESTS_CFG_RUNNERS)
-TEST_PREREQS += $(TESTS_CFG_DIR)/fast_math.stamp
+TEST_PREREQS += $(TESTS_CFG_DIR)/refused.stamp
 
 # Mutation check (not part of make test: it rebuilds the suite once per deliberate header bug).
 .PHONY: tests-mutants
