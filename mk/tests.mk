@@ -20,6 +20,9 @@
 #             (tests/config/cfg_forced_inline.h; not under V=2, where that is the default)
 #   prereq    -ffast-math (under V=2 also CYL_NO_FAST_PATH, CYL_INTERNAL) must stop the build at
 #             the header's #error (gcc and clang)
+# The runners that change the arithmetic (float_narrow, float_only, no_precise_double,
+# no_dispatch_*, fma_*) build with the entry points out of line (CYL_OUT_OF_LINE, see the
+# Makefile): the folding of constant options is gcc-O2's and clang-O2's to test.
 # make check also builds and runs every topic alone (tests-topics: proves test-one's builds).
 
 TESTS_CFG_DIR := $(BUILD)/tests-config
@@ -85,12 +88,12 @@ $(eval $(call TESTS_CFG_RUNNER,two_tu_cxx,tests/config/cfg_two_tu_main.c tests/c
 # The fast path's other arithmetic: the float API computed in float (as on targets without a
 # double FPU), and Kahan's FMA products where the FMA is hardware (x86-64 with FMA3 only, so
 # that the runner can execute here).
-$(eval $(call TESTS_CFG_RUNNER,float_narrow,tests/test_float.c,-DCYL_FLOAT_WIDE=0,c))
+$(eval $(call TESTS_CFG_RUNNER,float_narrow,tests/test_float.c,-DCYL_FLOAT_WIDE=0 $(CYL_OUT_OF_LINE),c))
 # The contract suite without the precise tier: as a float-only firmware builds it (CYL_NO_DOUBLE:
 # float computed in float; v2 then defines CYL_NO_PRECISE, which also leaves the exact path's
 # Newton steps out), and the double API under CYL_NO_PRECISE.
-$(eval $(call TESTS_CFG_RUNNER,float_only,tests/test_float.c,-DCYL_NO_DOUBLE,c))
-$(eval $(call TESTS_CFG_RUNNER,no_precise_double,tests/test_double.c,-DCYL_NO_PRECISE,c))
+$(eval $(call TESTS_CFG_RUNNER,float_only,tests/test_float.c,-DCYL_NO_DOUBLE $(CYL_OUT_OF_LINE),c))
+$(eval $(call TESTS_CFG_RUNNER,no_precise_double,tests/test_double.c,-DCYL_NO_PRECISE $(CYL_OUT_OF_LINE),c))
 # v1 only (V=2 leaves these out): the contract suite with every entry point forced inline (the
 # header's advice where a caller calls one from several places: each call site folds its own
 # constant options), which is v2's default CYL_DEF, so the runner would repeat test_float; and
@@ -105,8 +108,8 @@ endif
 # the FMA), and that copy giving the same bits as that path (at -O2 in GNU C, where gcc contracts
 # and vectorizes unless told not to).
 ifeq ($(V),2)
-$(eval $(call TESTS_CFG_RUNNER,no_dispatch_float,tests/test_float.c,-DCYL_FMA_DISPATCH=0,c))
-$(eval $(call TESTS_CFG_RUNNER,no_dispatch_double,tests/test_double.c,-DCYL_FMA_DISPATCH=0,c))
+$(eval $(call TESTS_CFG_RUNNER,no_dispatch_float,tests/test_float.c,-DCYL_FMA_DISPATCH=0 $(CYL_OUT_OF_LINE),c))
+$(eval $(call TESTS_CFG_RUNNER,no_dispatch_double,tests/test_double.c,-DCYL_FMA_DISPATCH=0 $(CYL_OUT_OF_LINE),c))
 $(eval $(call TESTS_CFG_RUNNER,dispatch,tests/config/cfg_dispatch_main.c tests/config/cfg_dispatch_other.c bench/cases.c,-Ibench -O2 -std=gnu99,c))
 # and the pairs (N1) as structs, as targets without x86-64's or AArch64's vectors form them,
 # giving the same bits as the vectors here.
@@ -128,9 +131,9 @@ $(eval $(call TESTS_CFG_RUNNER,size_double,tests/test_double.c,-Os,c))
 $(eval $(call TESTS_CFG_RUNNER,size_float_narrow,tests/test_float.c,-Os -DCYL_FLOAT_WIDE=0,c))
 endif
 ifeq ($(HOST_FMA),1)
-$(eval $(call TESTS_CFG_RUNNER,fma_float,tests/test_float.c,-mfma,c))
-$(eval $(call TESTS_CFG_RUNNER,fma_double,tests/test_double.c,-mfma,c))
-$(eval $(call TESTS_CFG_RUNNER,fma_float_narrow,tests/test_float.c,-mfma -DCYL_FLOAT_WIDE=0,c))
+$(eval $(call TESTS_CFG_RUNNER,fma_float,tests/test_float.c,-mfma $(CYL_OUT_OF_LINE),c))
+$(eval $(call TESTS_CFG_RUNNER,fma_double,tests/test_double.c,-mfma $(CYL_OUT_OF_LINE),c))
+$(eval $(call TESTS_CFG_RUNNER,fma_float_narrow,tests/test_float.c,-mfma -DCYL_FLOAT_WIDE=0 $(CYL_OUT_OF_LINE),c))
 endif
 
 # Each compiler is one argument (under V=2 it carries -iquote); HDR is where the #error must be.
