@@ -58,15 +58,16 @@ ci-cross:
 # ---------------------------------------------------------------- cxx-compat
 # cylinder_isect.h compiled as C++11 and C++17 by g++ and clang++ with the root Makefile's
 # WARN_CXX set (not -Wold-style-cast: C casts are the only ones C99 has), in each precision
-# configuration; each build of embedded/cxx_check.cpp must run and pass.
+# configuration; each build of embedded/cxx_check.cpp must run and pass. Under V=2 on v2's
+# header ($(V2_IQUOTE) finds it before the root's).
 CXX_COMPAT_DIR  := $(BUILD)/cxx
 CXX_COMPAT_WARN := $(filter-out -std=%,$(WARN_CXX))
 CXX_COMPAT_CFGS := default CYL_NO_PRECISE CYL_NO_DOUBLE CYL_NO_FLOAT
 # $(1) compiler, $(2) standard, $(3) configuration
 define CXX_COMPAT_RULE
-$(CXX_COMPAT_DIR)/cxx_check_$(1)_$(2)_$(3).ok: embedded/cxx_check.cpp cylinder_isect.h
+$(CXX_COMPAT_DIR)/cxx_check_$(1)_$(2)_$(3).ok: embedded/cxx_check.cpp $(HDR)
 	@mkdir -p $$(@D)
-	$(1) -std=$(2) $(CXX_COMPAT_WARN) -O2 $(if $(filter-out default,$(3)),-D$(3)) -I. $$< -lm -o $$(@:.ok=)
+	$(1) -std=$(2) $(CXX_COMPAT_WARN) -O2 $(if $(filter-out default,$(3)),-D$(3)) $(V2_IQUOTE) -I. $$< -lm -o $$(@:.ok=)
 	@$$(@:.ok=) >$$(@:.ok=.txt) 2>&1 || { cat $$(@:.ok=.txt); echo "cxx-compat: FAIL $(1) -std=$(2) $(3)" >&2; exit 1; }
 	@touch $$@
 CXX_COMPAT_OKS += $(CXX_COMPAT_DIR)/cxx_check_$(1)_$(2)_$(3).ok
@@ -75,7 +76,7 @@ CXX_COMPAT_OKS :=
 $(foreach x,g++ clang++,$(foreach s,c++11 c++17,$(foreach c,$(CXX_COMPAT_CFGS),$(eval $(call CXX_COMPAT_RULE,$(x),$(s),$(c))))))
 
 cxx-compat: $(CXX_COMPAT_OKS)
-	@echo "cxx-compat: $(words $(CXX_COMPAT_OKS)) builds (g++, clang++; C++11, C++17; $(CXX_COMPAT_CFGS)) warning-free and passing"
+	@echo "cxx-compat: $(HDR): $(words $(CXX_COMPAT_OKS)) builds (g++, clang++; C++11, C++17; $(CXX_COMPAT_CFGS)) warning-free and passing"
 
 # ---------------------------------------------------------------- cross-test
 # The whole Unity suite (tests/test_*.c, and fuzz/'s replay and regression runners) built with
