@@ -11,6 +11,11 @@
 #                   through add_subdirectory and FetchContent of the source tree; the CMake
 #                   install rules (CMakeLists.txt) must install the same files, and make
 #                   uninstall must leave nothing behind.
+#   make install V=2, make install-check V=2  the same with v2's header ($(HDR)) as the one
+#                   installed: the source tree that add_subdirectory, FetchContent and CMake's
+#                   install rules read is then a copy of the root's CMakeLists.txt and cmake/
+#                   with $(HDR) as its cylinder_isect.h ($(BUILD)/install-check/src), so that
+#                   issue 30's swap can be checked to change nothing for a user before it is made.
 PREFIX       ?= /usr/local
 DESTDIR      ?=
 INCLUDEDIR   ?= $(PREFIX)/include
@@ -19,7 +24,7 @@ PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
 CMAKEDIR     ?= $(LIBDIR)/cmake/cylinder_isect
 INSTALL      ?= install
 
-CYL_VERSION_PART = $(shell sed -n 's/^\#define CYL_VERSION_$(1) \+\([0-9]\+\).*/\1/p' cylinder_isect.h)
+CYL_VERSION_PART = $(shell sed -n 's/^\#define CYL_VERSION_$(1) \+\([0-9]\+\).*/\1/p' $(HDR))
 CYL_VERSION_MAJOR := $(call CYL_VERSION_PART,MAJOR)
 CYL_VERSION  := $(CYL_VERSION_MAJOR).$(call CYL_VERSION_PART,MINOR).$(call CYL_VERSION_PART,PATCH)
 CYL_VERSION_NEXT_MAJOR := $(shell echo $$(($(or $(CYL_VERSION_MAJOR),0) + 1)))
@@ -38,7 +43,7 @@ CHECK_TARGETS += install-check
 # Generated on every install: they depend on PREFIX and the directories, not only on files.
 $(INSTALL_GEN)/cylinder_isect.pc $(INSTALL_GEN)/cylinder_isectConfig.cmake $(INSTALL_GEN)/cylinder_isectConfigVersion.cmake: FORCE
 	@[ -n "$(CYL_VERSION_MAJOR)" ] && [[ "$(CYL_VERSION)" =~ ^[0-9]+\.[0-9]+\.[0-9]+$$ ]] || \
-	  { echo "install: no CYL_VERSION_MAJOR/MINOR/PATCH in cylinder_isect.h (got '$(CYL_VERSION)')" >&2; exit 1; }
+	  { echo "install: no CYL_VERSION_MAJOR/MINOR/PATCH in $(HDR) (got '$(CYL_VERSION)')" >&2; exit 1; }
 	@mkdir -p $(@D)
 	@sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@INCLUDEDIR@|$(PC_INCLUDEDIR)|g' -e 's|@CYL_VERSION@|$(CYL_VERSION)|g' \
 	  -e 's|@CYL_VERSION_MAJOR@|$(CYL_VERSION_MAJOR)|g' -e 's|@CYL_VERSION_NEXT_MAJOR@|$(CYL_VERSION_NEXT_MAJOR)|g' -e 's|@CYL_REL_INCLUDEDIR@|$(CYL_REL_INCLUDEDIR)|g' \
@@ -46,7 +51,7 @@ $(INSTALL_GEN)/cylinder_isect.pc $(INSTALL_GEN)/cylinder_isectConfig.cmake $(INS
 
 install: $(INSTALL_GEN)/cylinder_isect.pc $(INSTALL_GEN)/cylinder_isectConfig.cmake $(INSTALL_GEN)/cylinder_isectConfigVersion.cmake
 	$(INSTALL) -d $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(PKGCONFIGDIR) $(DESTDIR)$(CMAKEDIR)
-	$(INSTALL) -m 644 cylinder_isect.h $(DESTDIR)$(INCLUDEDIR)/
+	$(INSTALL) -m 644 $(HDR) $(DESTDIR)$(INCLUDEDIR)/cylinder_isect.h
 	$(INSTALL) -m 644 $(INSTALL_GEN)/cylinder_isect.pc $(DESTDIR)$(PKGCONFIGDIR)/
 	$(INSTALL) -m 644 $(INSTALL_GEN)/cylinder_isectConfig.cmake $(INSTALL_GEN)/cylinder_isectConfigVersion.cmake $(DESTDIR)$(CMAKEDIR)/
 
@@ -62,7 +67,10 @@ install-files:
 IC_DIR    := $(BUILD)/install-check
 IC_STAGE  := $(CURDIR)/$(IC_DIR)/stage
 IC_PREFIX := /usr/local
-IC_CC     ?= $(GCC)
+# The compiler alone: V=2 adds -iquote v2 to GCC, which would find v2's header before the installed one.
+IC_CC     ?= $(firstword $(GCC))
+# The source tree the CMake ways read: the repository, or under V=2 a copy with $(HDR) as its header.
+IC_SRC    := $(if $(filter 2,$(V)),$(CURDIR)/$(IC_DIR)/src,$(CURDIR))
 # $(call ic_expect,OUTPUT FILE): the consumer's output names this version and the hit.
 ic_expect = grep -qx 'cylinder_isect $(CYL_VERSION)' $(1) && grep -qx 'hit side t=4.133975' $(1) \
   || { echo "install-check: unexpected consumer output in $(1):"; cat $(1); exit 1; }
@@ -74,6 +82,8 @@ ic_cmake = cmake -S tests/consumer -B $(IC_DIR)/$(1) $(2) >$(IC_DIR)/$(1).log 2>
 
 install-check: deps tests/consumer/consumer.c tests/consumer/CMakeLists.txt
 	@rm -rf $(IC_DIR) && mkdir -p $(IC_DIR)
+	@[ "$(IC_SRC)" = "$(CURDIR)" ] || { mkdir -p $(IC_SRC) && cp -R CMakeLists.txt cmake $(IC_SRC)/ && \
+	  cp $(HDR) $(IC_SRC)/cylinder_isect.h && echo "install-check: source tree $(IC_SRC) with $(HDR)"; }
 	@# make install into an empty staging tree: exactly the listed files.
 	@$(MAKE) --no-print-directory -s install PREFIX=$(IC_PREFIX) DESTDIR=$(IC_STAGE) >$(IC_DIR)/install.log
 	@(cd $(IC_STAGE) && find . -type f | sed 's|^\.||' | sort) >$(IC_DIR)/make-files.txt
@@ -96,11 +106,11 @@ install-check: deps tests/consumer/consumer.c tests/consumer/CMakeLists.txt
 	  echo "install-check: find_package accepted version $(CYL_VERSION_NEXT_MAJOR).0"; exit 1; fi
 	@echo "install-check: find_package refuses version $(CYL_VERSION_NEXT_MAJOR).0: ok"
 	@# the source tree as a subproject, and as a FetchContent archive.
-	@$(call ic_cmake,subdirectory,-DCYL_CONSUME=subdirectory -DCYL_SOURCE_DIR=$(CURDIR))
-	@tar -czf $(IC_DIR)/cylinder_isect.tar.gz --transform 's|^|cylinder_isect/|' cylinder_isect.h CMakeLists.txt cmake
+	@$(call ic_cmake,subdirectory,-DCYL_CONSUME=subdirectory -DCYL_SOURCE_DIR=$(IC_SRC))
+	@tar -czf $(IC_DIR)/cylinder_isect.tar.gz -C $(IC_SRC) --transform 's|^|cylinder_isect/|' cylinder_isect.h CMakeLists.txt cmake
 	@$(call ic_cmake,fetchcontent,-DCYL_CONSUME=fetchcontent -DCYL_FETCH_URL=file://$(CURDIR)/$(IC_DIR)/cylinder_isect.tar.gz)
 	@# CMake's install rules install the same files.
-	@cmake -S . -B $(IC_DIR)/cmake-install >$(IC_DIR)/cmake-install.log 2>&1 && \
+	@cmake -S $(IC_SRC) -B $(IC_DIR)/cmake-install >$(IC_DIR)/cmake-install.log 2>&1 && \
 	  DESTDIR=$(CURDIR)/$(IC_DIR)/cmake-stage cmake --install $(IC_DIR)/cmake-install --prefix $(IC_PREFIX) >>$(IC_DIR)/cmake-install.log 2>&1 \
 	  || { cat $(IC_DIR)/cmake-install.log; exit 1; }
 	@(cd $(IC_DIR)/cmake-stage && find . -type f | sed 's|^\.||' | sort) >$(IC_DIR)/cmake-files.txt
