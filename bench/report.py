@@ -172,6 +172,7 @@ def main():
     ap.add_argument("--table")
     ap.add_argument("--header", default=DEFAULT_HEADER)
     ap.add_argument("--goal", default="make report")
+    ap.add_argument("--cost", help="make cost's tables (cost.md), copied in as a section")
     args = ap.parse_args()
     if args.insn_table:
         insn_table(args.insn_table, args.header)
@@ -419,6 +420,16 @@ def main():
              "Pareto front of each group (no other point is both faster and more accurate). "
              f"Groups: benign = {', '.join(GROUPS['benign'])}; stiff = "
              f"{', '.join(GROUPS['stiff'])}.\n")
+
+    # ---------------------------------------------------------------- make cost's tables
+    if args.cost:  # as `make cost` wrote them, in the program a renderer would be
+        with open(args.cost) as f:
+            cost = f.read().strip()
+        if not cost.startswith("## "):
+            sys.exit(f"report: {args.cost} does not start with a ## heading")
+        head, _, body = cost.partition("\n")
+        L.append(f"{head} (`make cost`, copied by `{goal}`)\n")
+        L.append(body.strip() + "\n")
 
     # ---------------------------------------------------------------- full tables
     L.append("## Full results\n")

@@ -2,7 +2,8 @@
 #   make test     runs build/bench/test_accuracy{,_narrow,_noprec,_fma} (accuracy targets on a fixed-seed
 #                 sample; ACCURACY_TARGETS=off: the *_no4ulps builds, see below)
 #   make report   bench/REPORT.md, bench/error_vs_time.png, docs/accuracy.md's table: accuracy,
-#                 time (median of BENCH_RUNS runs) and instructions per call (callgrind)
+#                 time (median of BENCH_RUNS runs) and instructions per call (callgrind), and
+#                 `make cost`'s tables (v1 and v2 against the end-point routine, mk/cost.mk)
 #                 (BENCH_SEED, BENCH_N change the seed and the cases per family)
 #   make report V=2  the same measurements of $(HDR) (v2), written to $(BUILD)/report/ only:
 #                 REPORT.md, error_vs_time.png and accuracy-table.md (docs/accuracy.md's table);
@@ -159,9 +160,10 @@ report: deps $(BENCH_BUILD)/bench $(REPORT_VENV)/.installed
 	done
 	@rm -f $(BENCH_BUILD)/insn.tsv
 	$(MAKE) --no-print-directory $(BENCH_BUILD)/insn.tsv
+	$(MAKE) --no-print-directory cost
 	BENCH_LIB_REV="$(BENCH_LIB_REV)" $(REPORT_VENV)/bin/python bench/report.py \
 	  --results $(BENCH_BUILD)/results.json --times $$(ls $(BENCH_BUILD)/times-*.json 2>/dev/null) \
-	  --insn $(BENCH_BUILD)/insn.tsv $(REPORT_OUT)
+	  --insn $(BENCH_BUILD)/insn.tsv --cost $(COST_BUILD)/cost.md $(REPORT_OUT)
 ifneq ($(V),2)
 	$(MAKE) --no-print-directory readme
 endif
