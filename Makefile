@@ -58,6 +58,9 @@ else
 $(error V=$(V): use V=1 (./cylinder_isect.h, the default) or V=2 ($$(V2_DIR)/cylinder_isect.h))
 endif
 BUILD    ?= build
+# The C compiler without the -iquote V=2 adds: for builds that choose their header themselves
+# (make cost, the cross and size builds, the install test's consumer of the installed header).
+GCC_ALONE := $(firstword $(GCC))
 RESULTS  := $(BUILD)/results
 .DEFAULT_GOAL := test
 # `make test` alone uses every core unless a -j is given: the suite is dozens of independent

@@ -12,9 +12,8 @@ COST_SEED     ?= 20261122
 COST_RUNS     ?= 5
 COST_SRCS     := bench/cost.c bench/cases.c
 COST_DEPS     := $(COST_SRCS) bench/cases.h bench/alt_formulations.h
-# The compiler alone (GCC's first word): other goals may add include options to GCC (the
-# suite's V=2), while cost picks each column's header itself.
-COST_GCC      := $(firstword $(GCC))
+# The compiler alone (GCC_ALONE, Makefile): cost picks each column's header itself.
+COST_GCC      := $(GCC_ALONE)
 # The project's warnings without -Werror, as the other measuring tools (a warning in a header
 # under development must not block measuring it).
 COST_WARN     := $(filter-out -Werror,$(WARN_C))

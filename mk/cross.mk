@@ -15,7 +15,7 @@
 
 # V=2: the compiler alone (V=2 adds -iquote to GCC), v2's header, the configurations v2 has.
 ifeq ($(V),2)
-CROSS_ENV := BUILD=$(BUILD) GCC=$(firstword $(GCC)) CYL_INCLUDE=$(V2_DIR) SIZES_SKIP=nofast
+CROSS_ENV := BUILD=$(BUILD) GCC=$(GCC_ALONE) CYL_INCLUDE=$(V2_DIR) SIZES_SKIP=nofast
 else
 CROSS_ENV := BUILD=$(BUILD) GCC=$(GCC)
 endif

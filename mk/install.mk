@@ -67,9 +67,11 @@ install-files:
 IC_DIR    := $(BUILD)/install-check
 IC_STAGE  := $(CURDIR)/$(IC_DIR)/stage
 IC_PREFIX := /usr/local
-# The compiler alone: V=2 adds -iquote v2 to GCC, which would find v2's header before the installed one.
-IC_CC     ?= $(firstword $(GCC))
-# The source tree the CMake ways read: the repository, or under V=2 a copy with $(HDR) as its header.
+# The compiler alone (GCC_ALONE): V=2's -iquote v2 would find v2's header before the installed one.
+IC_CC     ?= $(GCC_ALONE)
+# The source tree the CMake ways read (IC_TREE and the header): the repository, or under V=2 a
+# copy with $(HDR) as its header.
+IC_TREE   := CMakeLists.txt cmake
 IC_SRC    := $(if $(filter 2,$(V)),$(CURDIR)/$(IC_DIR)/src,$(CURDIR))
 # $(call ic_expect,OUTPUT FILE): the consumer's output names this version and the hit.
 ic_expect = grep -qx 'cylinder_isect $(CYL_VERSION)' $(1) && grep -qx 'hit side t=4.133975' $(1) \
@@ -82,7 +84,7 @@ ic_cmake = cmake -S tests/consumer -B $(IC_DIR)/$(1) $(2) >$(IC_DIR)/$(1).log 2>
 
 install-check: deps tests/consumer/consumer.c tests/consumer/CMakeLists.txt
 	@rm -rf $(IC_DIR) && mkdir -p $(IC_DIR)
-	@[ "$(IC_SRC)" = "$(CURDIR)" ] || { mkdir -p $(IC_SRC) && cp -R CMakeLists.txt cmake $(IC_SRC)/ && \
+	@[ "$(IC_SRC)" = "$(CURDIR)" ] || { mkdir -p $(IC_SRC) && cp -R $(IC_TREE) $(IC_SRC)/ && \
 	  cp $(HDR) $(IC_SRC)/cylinder_isect.h && echo "install-check: source tree $(IC_SRC) with $(HDR)"; }
 	@# make install into an empty staging tree: exactly the listed files.
 	@$(MAKE) --no-print-directory -s install PREFIX=$(IC_PREFIX) DESTDIR=$(IC_STAGE) >$(IC_DIR)/install.log
@@ -107,7 +109,7 @@ install-check: deps tests/consumer/consumer.c tests/consumer/CMakeLists.txt
 	@echo "install-check: find_package refuses version $(CYL_VERSION_NEXT_MAJOR).0: ok"
 	@# the source tree as a subproject, and as a FetchContent archive.
 	@$(call ic_cmake,subdirectory,-DCYL_CONSUME=subdirectory -DCYL_SOURCE_DIR=$(IC_SRC))
-	@tar -czf $(IC_DIR)/cylinder_isect.tar.gz -C $(IC_SRC) --transform 's|^|cylinder_isect/|' cylinder_isect.h CMakeLists.txt cmake
+	@tar -czf $(IC_DIR)/cylinder_isect.tar.gz -C $(IC_SRC) --transform 's|^|cylinder_isect/|' cylinder_isect.h $(IC_TREE)
 	@$(call ic_cmake,fetchcontent,-DCYL_CONSUME=fetchcontent -DCYL_FETCH_URL=file://$(CURDIR)/$(IC_DIR)/cylinder_isect.tar.gz)
 	@# CMake's install rules install the same files.
 	@cmake -S $(IC_SRC) -B $(IC_DIR)/cmake-install >$(IC_DIR)/cmake-install.log 2>&1 && \
