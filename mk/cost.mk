@@ -3,6 +3,8 @@
 # bench/cost.c, built as a user builds it (gcc -std=c99 -O2, then -O2 -march=x86-64-v3).
 #   make cost        callgrind counts: one table per -march setting, also in build/cost/cost.md
 #   make cost-time   time per call and its ratio, median of COST_RUNS runs (build/cost/cost-time.md)
+#   make cost-mix    make cost's counts by kind of instruction (move, convert, arith, decide, ...)
+#                    for the loops COST_MIX_LOOPS names (build/cost/cost-mix.md)
 # COST_V2_DIR (default v2): where v2's header is; without one the v2 columns say n/a.
 # COST_N, COST_SEED: cases generated (those of finite height kept), their seed.
 COST_BUILD    := $(BUILD)/cost
@@ -32,7 +34,11 @@ COST_BINS     := $(addprefix $(COST_BUILD)/cost-,$(COST_KEYS))
 COST_TSVS     := $(addprefix $(COST_BUILD)/insn-,$(addsuffix .tsv,$(COST_KEYS)))
 COST_REPORT   := $(PYTHON) bench/cost_report.py
 COST_TABLE_ARGS = --v2-dir $(COST_V2_DIR) --seed $(COST_SEED)
-DEPS_GOALS_cost := cost cost-time
+# callgrind counting cost_run alone, one dump per call of it (one per loop)
+COST_CG       := valgrind --tool=callgrind --toggle-collect=cost_run --dump-after=cost_run
+COST_MIX_LOOPS ?= 24 endpoint,24 intersect:plain,24 intersect:default,24 intersect:precise,$\
+                  53 endpoint,53 intersect:plain,53 intersect:default,53 intersect:precise
+DEPS_GOALS_cost := cost cost-time cost-mix
 
 # One binary per version and -march setting. Its .flags file holds the command and is
 # rewritten only when that changes (another COST_V2_DIR, other flags), which rebuilds it.
@@ -49,14 +55,14 @@ $(foreach v,v1 v2,$(foreach m,$(COST_MARCHES),$(eval $(call COST_BIN_RULES,$(v),
 # One callgrind run per binary: the k-th dump counts the k-th loop bench/cost.c announces.
 $(COST_BUILD)/insn-%.tsv: $(COST_BUILD)/cost-% bench/cost_report.py
 	@rm -rf $(COST_BUILD)/cg-$* && mkdir -p $(COST_BUILD)/cg-$*
-	valgrind --tool=callgrind --toggle-collect=cost_run --dump-after=cost_run --dump-instr=no \
+	$(COST_CG) --dump-instr=no \
 	  --callgrind-out-file=$(COST_BUILD)/cg-$*/out $< --n $(COST_N) --seed $(COST_SEED) \
 	  > $(COST_BUILD)/cg-$*/plan.txt 2> $(COST_BUILD)/cg-$*/valgrind.log \
 	  || { tail -n 20 $(COST_BUILD)/cg-$*/valgrind.log >&2; exit 1; }
 	@$(COST_REPORT) pair --key $* --cflags='$(COST_OPT_$(lastword $(subst -, ,$*)))' \
 	  $(COST_BUILD)/cg-$*/plan.txt $(COST_BUILD)/cg-$* > $@.tmp && mv $@.tmp $@
 
-.PHONY: cost cost-time
+.PHONY: cost cost-time cost-mix
 
 # Counted afresh on every call (a few seconds); the binaries are rebuilt only when needed.
 cost: deps
@@ -75,3 +81,15 @@ cost-time: deps $(COST_BINS)
 	  done; \
 	done
 	@$(COST_REPORT) time --out $(COST_BUILD)/cost-time.md $(COST_TABLE_ARGS) $(COST_BUILD)/time-*.txt
+
+# The same runs with each instruction's count kept (--dump-instr=yes), read by kind.
+cost-mix: deps $(COST_BINS)
+	@set -euo pipefail; for key in $(COST_KEYS); do \
+	  d=$(COST_BUILD)/mix-$$key; rm -rf $$d && mkdir -p $$d; \
+	  $(COST_CG) --dump-instr=yes \
+	    --callgrind-out-file=$$d/out $(COST_BUILD)/cost-$$key --n $(COST_N) --seed $(COST_SEED) \
+	    > $$d/plan.txt 2> $$d/valgrind.log || { tail -n 20 $$d/valgrind.log >&2; exit 1; }; \
+	done
+	@$(PYTHON) bench/cost_mix.py --loops '$(COST_MIX_LOOPS)' \
+	  $(foreach k,$(COST_KEYS),$(k)=$(COST_BUILD)/cost-$(k):$(COST_BUILD)/mix-$(k)) \
+	  | tee $(COST_BUILD)/cost-mix.md
