@@ -6,10 +6,10 @@
 Each CGDIR holds a callgrind run of bench/cost.c's BINARY made with --dump-instr=yes (the
 k-th dump counts the k-th loop of plan.txt, as for `make cost`). For each loop named, this
 prints the instructions per call by kind, the empty loop's subtracted kind by kind, so that a
-cost can be read as data movement (register copies, shuffles, loads and stores), conversions,
-arithmetic, and decisions (comparisons and branches), not as one number only. Kinds are
-assigned by mnemonic (x86-64, SSE and AVX forms alike); instructions outside the binary
-(libm, libc) count as "call".
+cost can be read as data movement (register copies, shuffles, loads and stores; lea, push and
+pop counted with them), conversions, arithmetic, and decisions (comparisons and branches), not
+as one number only. Kinds are assigned by mnemonic (x86-64, SSE and AVX forms alike);
+instructions outside the binary (libm, libc) count as "call".
 """
 import argparse
 import os
@@ -83,7 +83,8 @@ def main():
     args = ap.parse_args()
     loops = [tuple(x.split()) for x in args.loops.split(",")]
     print("Instructions per call by kind (callgrind, bench/cost.c's loops, the empty loop's "
-          "subtracted): move = register copies, shuffles, loads, stores; decide = comparisons "
+          "subtracted): move = register copies, shuffles, loads, stores (lea, push, pop too); "
+          "decide = comparisons "
           "and branches; call = outside the binary.\n")
     print("| binary | loop | total | " + " | ".join(KINDS) + " |")
     print("|---|---|---:|" + "---:|" * len(KINDS))
