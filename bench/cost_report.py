@@ -6,8 +6,9 @@
       with its dumps CGDIR/out.1, out.2, ... (the k-th dump counts the k-th such line) and
       writes instructions per call, the empty loop of the same precision subtracted; lines
       "na PREC NAME CODE" (a loop not run) are kept as n/a.
-  cost_report.py insn --out MD [--v2-dir DIR] [--n N] [--seed S] KEY.tsv...
-      one markdown table per -march setting, printed and written to MD.
+  cost_report.py insn --out MD [--v2-dir DIR] [--n N] [--seed S] [--held TXT] KEY.tsv...
+      one markdown table per -march setting, then v2's cost limits (LIMITS) met or not,
+      printed and written to MD; exits 1 if a limit TXT lists as held is no longer met.
   cost_report.py time --out MD [--v2-dir DIR] [--n N] [--seed S] RUN.txt...
       the same from the --time runs (RUN.txt: "# key KEY" then cost --time's output):
       ns per call and ratio to the end-point routine, each the median over the runs.
@@ -30,6 +31,13 @@ ROWS = [
     ("plain: CAPS\\|NO_ERRBOUND\\|NO_NORMAL", "intersect:plain"),
     ("default: CAPS", "intersect:default"),
     ("precise: CAPS\\|PRECISE", "intersect:precise"),
+]
+# The cost limits of issues 28 and 29 on v2 at -O2 (ratio to the end-point routine, both APIs):
+# (option set, loop name, limit, issue)
+LIMITS = [
+    ("plain", "intersect:plain", 1.4, 28),
+    ("default", "intersect:default", 2.0, 28),
+    ("precise", "intersect:precise", 3.0, 29),
 ]
 SITES = ["plain", "default", "precise", "open", "outward"]
 SITE_OPTS = {
@@ -195,6 +203,31 @@ def key_of(meta, path):
     return v, m
 
 
+def limits(loaded, held_txt):
+    """The table of LIMITS on v2 at -O2, and the held ones (held_txt: lines "SET float|double") lost."""
+    vals = loaded.get(("v2", "base"), (None,))[0]
+    held = set()
+    if held_txt:
+        with open(held_txt) as f:
+            held = {tuple(ln.split()) for ln in f if ln.strip() and not ln.startswith("#")}
+        unknown = held - {(s, pn) for s, *_ in LIMITS for _, pn in PRECS}
+        if unknown:
+            sys.exit(f"cost_report: {held_txt} names limits LIMITS does not have: {sorted(unknown)}")
+    lines = ["### v2's cost limits, gcc -std=c99 -O2", "",
+             "| option set | precision | measured | limit | met |", "|---|---|---:|---:|---|"]
+    lost = []
+    for label, name, limit, issue in LIMITS:
+        for prec, pn in PRECS:
+            v, ep = (vals or {}).get((prec, name)), (vals or {}).get((prec, "endpoint"))
+            r = v / ep if isinstance(v, float) and isinstance(ep, float) and ep > 0 else None
+            met = "yes" if r is not None and r <= limit else "no"
+            shown = f"{v:.1f} ({r:.3f}x)" if r is not None else "n/a"
+            lines.append(f"| {label} (issue {issue}) | {pn} | {shown} | {limit:.1f}x | {met} |")
+            if met == "no" and (label, pn) in held:
+                lost.append(f"{label} {pn}: {shown} > {limit:.1f}x")
+    return lines + [""], lost
+
+
 def cmd_insn(a):
     loaded = {}
     for p in a.files:
@@ -202,9 +235,12 @@ def cmd_insn(a):
         loaded[key_of(meta, p)] = (vals, meta)
     lines = report(a, loaded, "Instructions per call under callgrind",
                    "## Instructions per call: v1 and v2 against the end-point routine")
-    write(a, lines)
+    lim, lost = limits(loaded, a.held) if ("v2", "base") in loaded else ([], [])
+    write(a, lines + lim)
     with open(a.out, "a") as f:
         f.write("\n".join(every_site(a, loaded)))
+    if lost:
+        sys.exit("cost: a limit " + a.held + " lists as met is no longer met: " + "; ".join(lost))
 
 
 def cmd_time(a):
@@ -265,6 +301,7 @@ def main():
         p.add_argument("--out", required=True)
         p.add_argument("--v2-dir", default="v2")
         p.add_argument("--seed", default="?")
+        p.add_argument("--held", default=None)
         p.add_argument("files", nargs="+")
     a = ap.parse_args()
     {"pair": cmd_pair, "insn": cmd_insn, "time": cmd_time}[a.cmd](a)
