@@ -17,6 +17,8 @@ import re
 import subprocess
 import sys
 
+from cost_report import PRECS  # ("24", "float"), ("53", "double"): plan.txt's precisions
+
 KINDS = ("move", "convert", "arith", "decide", "other", "call")
 
 
@@ -84,8 +86,7 @@ def main():
     loops = [tuple(x.split()) for x in args.loops.split(",")]
     print("Instructions per call by kind (callgrind, bench/cost.c's loops, the empty loop's "
           "subtracted): move = register copies, shuffles, loads, stores (lea, push, pop too); "
-          "decide = comparisons "
-          "and branches; call = outside the binary.\n")
+          "decide = comparisons and branches; call = outside the binary.\n")
     print("| binary | loop | total | " + " | ".join(KINDS) + " |")
     print("|---|---|---:|" + "---:|" * len(KINDS))
     for run in args.runs:
@@ -104,7 +105,7 @@ def main():
                 continue
             e = per[(lp[0], "empty")]
             row = {kd: per[lp][kd] - e[kd] for kd in KINDS}
-            name = ("float " if lp[0] == "24" else "double ") + lp[1]
+            name = dict(PRECS)[lp[0]] + " " + lp[1]
             print("| %s | %s | %.1f | %s |" % (key, name, sum(row.values()),
                                              " | ".join("%.1f" % row[kd] for kd in KINDS)))
     return 0
