@@ -1,0 +1,61 @@
+# The batch (one ray against many cylinders, v2/cylinder_isect_batch.h; issue 31), staged beside
+# v2's header until v2 replaces v1.
+#   make test V=2      also runs tests/batch/batch.c (float and double) in every configuration of
+#                      the root Makefile, and built for x86-64-v3 (AVX2), for x86-64-v4 (AVX-512,
+#                      where this machine has it) and in the batch's portable form
+#   make bench-batch   ns per test of the batch against the scalar loop, float and double, N = 1024,
+#                      4096, 65536 and 2^20, for each form this machine runs: -O2 (SSE2), the
+#                      portable form, x86-64-v3 (AVX2), x86-64-v4 (AVX-512); the median of
+#                      BENCH_BATCH_RUNS timings, in one run (build/bench-batch/bench-batch.md)
+BATCH_HDRS := v2/cylinder_isect.h v2/cylinder_isect_batch.h
+HOST_AVX512 := $(shell grep -qw avx512f /proc/cpuinfo 2>/dev/null && test "$$(uname -m)" = x86_64 && echo 1)
+DEPS_GOALS_batch := bench-batch
+
+ifeq ($(V),2)
+# $(1) configuration, $(2) runner name, $(3) extra flags (the configuration's own flags first)
+define BATCH_RUNNER
+$(BUILD)/$(1)/$(2)_float: tests/batch/batch.c $(BATCH_HDRS) $(BUILD)/$(1)/unity.o
+	@mkdir -p $$(@D)
+	$$(CFG_CC_$(1)) $$(CFG_FLAGS_$(1)) $(3) $(UNITY_FLAGS) -I. $$< -x none $(BUILD)/$(1)/unity.o -lm -o $$@
+$(BUILD)/$(1)/$(2)_double: tests/batch/batch.c $(BATCH_HDRS) $(BUILD)/$(1)/unity.o
+	@mkdir -p $$(@D)
+	$$(CFG_CC_$(1)) $$(CFG_FLAGS_$(1)) $(3) -DT_DOUBLE $(UNITY_FLAGS) -I. $$< -x none $(BUILD)/$(1)/unity.o -lm -o $$@
+RUNNERS += $(BUILD)/$(1)/$(2)_float $(BUILD)/$(1)/$(2)_double
+endef
+$(foreach c,$(CONFIGS),$(eval $(call BATCH_RUNNER,$(c),batch)))
+$(eval $(call BATCH_RUNNER,gcc-O2,batch_portable,-DCYL_BATCH_PORTABLE))
+ifeq ($(shell uname -m),x86_64)
+$(eval $(call BATCH_RUNNER,gcc-O2,batch_avx2,-march=x86-64-v3))
+$(eval $(call BATCH_RUNNER,clang-O2,batch_avx2,-march=x86-64-v3))
+endif
+ifeq ($(HOST_AVX512),1)
+$(eval $(call BATCH_RUNNER,gcc-O2,batch_avx512,-march=x86-64-v4))
+endif
+endif
+
+# ---------------------------------------------------------------- make bench-batch
+BENCH_BATCH_DIR   := build/bench-batch
+BENCH_BATCH_RUNS  ?= 5
+BENCH_BATCH_TESTS ?= 4e6
+BENCH_BATCH_KEYS  := sse2 portable $(if $(filter x86_64,$(shell uname -m)),avx2) $(if $(HOST_AVX512),avx512)
+BENCH_BATCH_FLAGS_sse2     := -O2
+BENCH_BATCH_FLAGS_portable := -O2 -DCYL_BATCH_PORTABLE
+BENCH_BATCH_FLAGS_avx2     := -O2 -march=x86-64-v3
+BENCH_BATCH_FLAGS_avx512   := -O2 -march=x86-64-v4
+$(BENCH_BATCH_DIR)/batch-%: bench/batch.c $(BATCH_HDRS)
+	@mkdir -p $(@D)
+	$(GCC_ALONE) $(WARN_C) $(BENCH_BATCH_FLAGS_$*) -iquote $(abspath v2) $< -lm -o $@
+
+.PHONY: bench-batch
+bench-batch: deps $(addprefix $(BENCH_BATCH_DIR)/batch-,$(BENCH_BATCH_KEYS))
+	@set -euo pipefail; out=$(BENCH_BATCH_DIR)/bench-batch.md; { \
+	  echo "## One ray against N capped cylinders: the batch and the scalar loop"; echo; \
+	  echo "CPU: $$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'), gcc $$($(GCC_ALONE) -dumpfullversion)." \
+	       "Per row: ns per test (one ray against one cylinder) and tests per second of the loop over" \
+	       "cyl?_intersect(.., CYL_CAPS, ..) keeping the smallest t, and of cyl?_batch_nearest(.., CYL_CAPS, ..)," \
+	       "each the median of $(BENCH_BATCH_RUNS) timings of about $(BENCH_BATCH_TESTS) tests (bench/batch.c: seeded scenes," \
+	       "the rays' answers compared with the loop's first); hits: the rays that hit something."; echo; \
+	  echo "| build | type | N | rays | hits | loop ns | loop tests/s | batch ns | batch tests/s | speed-up |"; \
+	  echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"; \
+	  $(foreach k,$(BENCH_BATCH_KEYS),$(BENCH_BATCH_DIR)/batch-$(k) --key "$(k): $(BENCH_BATCH_FLAGS_$(k))" --runs $(BENCH_BATCH_RUNS) --tests $(BENCH_BATCH_TESTS);) \
+	} | tee $$out.tmp; mv $$out.tmp $$out

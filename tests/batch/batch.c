@@ -1,0 +1,419 @@
+/* batch.c: the batch queries of cylinder_isect_batch.h against the scalar calls they stand for.
+ *
+ * Compiled as it is it tests cylf_batch_*; with -DT_DOUBLE, cyld_batch_*. The contract is exact
+ * agreement: cyl?_batch_nearest gives what a loop of cyl?_intersect over the cylinders in index
+ * order keeping the smallest t (the lowest index among equal ones) gives, the same t bits;
+ * cyl?_batch_any what a loop of cyl?_occluded gives; errors the scalar ones, nothing written.
+ * So every check here compares with ==: sameness with the scalar call is the property under
+ * test. The scenes are seeded random ones with the hard cases mixed in: origins inside and on
+ * the surface, rays parallel and perpendicular to axes, grazing rays, tmin and tmax on a
+ * crossing, cylinders and rays outside the filter's range, batch sizes around the block width.
+ */
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "unity.h"
+#include "cylinder_isect_batch.h"
+
+#ifdef T_DOUBLE
+#define T double
+#define CYL(x) cyld_##x
+#define T_HUGE 1e200 /* beyond the filter's range (2^96): such cylinders are always asked */
+#define TANG_TOL CYL_TANGENT_TOL
+#else
+#define T float
+#define CYL(x) cylf_##x
+#define T_HUGE 1e30f
+#define TANG_TOL (double)CYL_TANGENT_TOLF
+#endif
+
+void setUp(void) {}
+void tearDown(void) {}
+
+/* x == y, for the values this file knows are exact (no -Wfloat-equal: the point is exactness) */
+static int eq(T x, T y) { return !(x < y) && !(x > y); }
+
+/* ------------------------------------------------------------------ random scenes */
+static uint64_t rng_state;
+static double rnd(void) /* uniform in [0, 1) */
+{
+    rng_state = rng_state * 6364136223846793005u + 1442695040888963407u;
+    return (double)(rng_state >> 11) / 9007199254740992.0;
+}
+static T uni(double lo, double hi) { return (T)(lo + (hi - lo) * rnd()); }
+
+static void unit_dir(T v[3])
+{
+    double x, y, z, n;
+    do x = 2 * rnd() - 1, y = 2 * rnd() - 1, z = 2 * rnd() - 1, n = x * x + y * y + z * z; while (n > 1 || n < 1e-4);
+    n = sqrt(n), v[0] = (T)(x / n), v[1] = (T)(y / n), v[2] = (T)(z / n);
+}
+
+/* A scene of n cylinders in a box of half side L: a quarter with axes along a coordinate axis
+   exactly, some infinite, a few of radius far below their distance (thin: hair). */
+static void scene(CYL(cylinder) *cy, size_t n, double L)
+{
+    size_t i;
+    int k;
+    for (i = 0; i < n; i++) {
+        for (k = 0; k < 3; k++) cy[i].c[k] = uni(-L, L);
+        if (rnd() < 0.25) {
+            k = (int)(rnd() * 3);
+            cy[i].a[0] = cy[i].a[1] = cy[i].a[2] = 0, cy[i].a[k] = rnd() < 0.5 ? 1 : -2;
+        } else unit_dir(cy[i].a);
+        if (rnd() < 0.3) cy[i].a[0] *= 3, cy[i].a[1] *= 3, cy[i].a[2] *= 3; /* a of any length */
+        cy[i].r = rnd() < 0.1 ? uni(1e-4, 1e-3) * (T)L : uni(0.01, 0.08) * (T)L;
+        cy[i].h = rnd() < 0.1 ? (T)INFINITY : uni(0.02, 0.5) * (T)L;
+    }
+}
+
+/* Unit u, v perpendicular to c's axis and to each other (in double). */
+static void frame(const CYL(cylinder) *c, double u[3], double v[3])
+{
+    double a[3], p = 0, q = 0, an = 0;
+    int k;
+    for (k = 0; k < 3; k++) a[k] = (double)c->a[k], an += a[k] * a[k];
+    do {
+        for (k = 0, p = 0; k < 3; k++) u[k] = 2 * rnd() - 1, p += u[k] * a[k];
+        for (k = 0, q = 0; k < 3; k++) u[k] -= p / an * a[k], q += u[k] * u[k];
+    } while (q < 1e-6);
+    for (k = 0; k < 3; k++) u[k] /= sqrt(q);
+    an = sqrt(an);
+    v[0] = (a[1] * u[2] - a[2] * u[1]) / an, v[1] = (a[2] * u[0] - a[0] * u[2]) / an, v[2] = (a[0] * u[1] - a[1] * u[0]) / an;
+}
+
+/* A ray aimed at cylinder j of the scene in one of several hard ways, else random. */
+static CYL(ray) ray_for(const CYL(cylinder) *cy, size_t n, double L, unsigned opts)
+{
+    CYL(ray) ray;
+    const CYL(cylinder) *c = &cy[(size_t)(rnd() * (double)n) % (n ? n : 1)];
+    double kind = rnd();
+    int k;
+    unit_dir(ray.d), ray.tmin = 0, ray.tmax = (T)INFINITY;
+    for (k = 0; k < 3; k++) ray.o[k] = uni(-1.5 * L, 1.5 * L);
+    if (!n) return ray;
+    if (kind < 0.15) /* from the center of a cylinder: inside */
+        for (k = 0; k < 3; k++) ray.o[k] = c->c[k];
+    else if (kind < 0.3) /* along the axis of one, exactly */
+        for (k = 0; k < 3; k++) ray.d[k] = rnd() < 0.5 ? c->a[k] : -c->a[k];
+    else if (kind < 0.45) { /* toward its center: crosses it */
+        for (k = 0; k < 3; k++) ray.d[k] = c->c[k] - ray.o[k];
+    } else if (kind < 0.55) { /* perpendicular to a coordinate axis (d_z = 0) */
+        ray.d[2] = 0;
+        if (eq(ray.d[0], 0) && eq(ray.d[1], 0)) ray.d[0] = 1;
+    } else if (kind < 0.65) { /* toward a point at distance r from the axis: crosses there */
+        double u[3], v[3];
+        frame(c, u, v);
+        for (k = 0; k < 3; k++) ray.d[k] = (T)((double)c->c[k] + u[k] * (double)c->r - (double)ray.o[k]);
+    } else if (kind < 0.8) { /* grazing: a line at distance r(1 + eps) from the axis, eps at the tangent band's edges */
+        static const double eps[] = {0, 1e-3, -1e-3, 9.5367431640625e-07, -9.5367431640625e-07, 9.094947017729282e-13, -9.094947017729282e-13};
+        double u[3], v[3], an = 0, rho, beta = rnd() < 0.5 ? 0 : (double)uni(-0.3, 0.3), z = (double)uni(-0.6, 0.6) * (double)c->h;
+        double e = rnd() < 0.5 ? eps[(int)(rnd() * 7)] : (TANG_TOL / 2) * (rnd() < 0.5 ? 1 : -1) * (1 + (double)uni(-1e-3, 1e-3));
+        frame(c, u, v);
+        for (k = 0; k < 3; k++) an += (double)c->a[k] * (double)c->a[k];
+        an = sqrt(an), rho = (double)c->r * (1 + e);
+        if (!(z < 1e30 && z > -1e30)) z = 0; /* an infinite tube */
+        for (k = 0; k < 3; k++)
+            ray.o[k] = (T)((double)c->c[k] + rho * u[k] - 5 * (double)c->r * v[k] + z * (double)c->a[k] / an),
+            ray.d[k] = (T)(v[k] + beta * (double)c->a[k] / an);
+    }
+    if (eq(ray.d[0], 0) && eq(ray.d[1], 0) && eq(ray.d[2], 0)) ray.d[0] = 1;
+    if (rnd() < 0.2) { /* tmin or tmax exactly on a crossing of some cylinder */
+        CYL(hit) h;
+        if (CYL(intersect)(&ray, c, opts, &h) == CYL_HIT) {
+            if (rnd() < 0.5) ray.tmax = h.t;
+            else ray.tmin = h.t;
+        }
+    } else if (rnd() < 0.2) ray.tmin = uni(-L, 0), ray.tmax = uni(0, 2 * L);
+    return ray;
+}
+
+/* The scalar loops the batch stands for. */
+static int loop_nearest(const CYL(ray) *ray, const CYL(cylinder) *cy, size_t n, unsigned opts, size_t *idx, T *t)
+{
+    CYL(hit) h;
+    size_t i;
+    int rc, got = 0;
+    for (i = 0; i < n; i++) {
+        rc = CYL(intersect)(ray, &cy[i], opts, &h);
+        if (rc < 0) return rc;
+        if (rc == CYL_HIT && (!got || h.t < *t)) *idx = i, *t = h.t, got = 1;
+    }
+    return got;
+}
+static int loop_any(const CYL(ray) *ray, const CYL(cylinder) *cy, size_t n, unsigned opts)
+{
+    size_t i;
+    int rc;
+    for (i = 0; i < n; i++)
+        if ((rc = CYL(occluded)(ray, &cy[i], opts)) != 0) return rc;
+    return 0;
+}
+
+/* Builds a batch of cy[0..n) in fresh memory at an odd offset (any alignment is accepted). */
+static void *build(CYL(batch) *b, const CYL(cylinder) *cy, size_t n)
+{
+    unsigned char *mem = (unsigned char *)malloc(CYL(batch_bytes)(n) + 1);
+    TEST_ASSERT_NOT_NULL(mem);
+    TEST_ASSERT_EQUAL_INT(0, CYL(batch_build)(b, mem + 1, cy, n));
+    return mem;
+}
+
+/* Every query of one ray, both ways, must agree bit for bit. */
+static void agree(const CYL(batch) *b, const CYL(ray) *ray, const CYL(cylinder) *cy, size_t n, unsigned opts)
+{
+    size_t i1 = (size_t)-1, i2 = (size_t)-1;
+    T t1 = -1, t2 = -1;
+    int r1 = CYL(batch_nearest)(b, ray, opts, &i1, &t1), r2 = loop_nearest(ray, cy, n, opts, &i2, &t2);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(r2, r1, "nearest: the return value");
+    if (r1 == CYL_HIT) {
+        TEST_ASSERT_TRUE_MESSAGE(i1 == i2, "nearest: the index");
+        TEST_ASSERT_TRUE_MESSAGE(memcmp(&t1, &t2, sizeof t1) == 0, "nearest: the t bits");
+    } else TEST_ASSERT_TRUE_MESSAGE(i1 == (size_t)-1 && eq(t1, -1), "nearest: *i and *t untouched without a hit");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(loop_any(ray, cy, n, opts), CYL(batch_any)(b, ray, opts), "any");
+}
+
+static const unsigned opt_sets[] = {0u, CYL_CAPS, CYL_CAPS | CYL_NO_TANGENT, CYL_NO_NORMAL | CYL_NO_ERRBOUND,
+                                    CYL_CAPS | CYL_OUTWARD | CYL_TRUSTED,
+#ifndef CYL_NO_PRECISE
+                                    CYL_CAPS | CYL_PRECISE
+#endif
+};
+#define N_OPTS (sizeof opt_sets / sizeof opt_sets[0])
+
+/* ------------------------------------------------------------------ tests */
+static void test_random_scenes_agree_with_the_scalar_loop(void)
+{
+    static const size_t sizes[] = {1, 7, 8, 9, 15, 16, 17, 100, 700};
+    size_t s, r, o;
+    rng_state = 20261207u;
+    for (s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
+        size_t n = sizes[s];
+        CYL(cylinder) *cy = (CYL(cylinder) *)malloc(n * sizeof *cy);
+        CYL(batch) b;
+        void *mem;
+        double L = rnd() < 0.5 ? 10 : 1000;
+        TEST_ASSERT_NOT_NULL(cy);
+        scene(cy, n, L);
+        mem = build(&b, cy, n);
+        for (r = 0; r < 200; r++)
+            for (o = 0; o < N_OPTS; o++) {
+                CYL(ray) ray = ray_for(cy, n, L, opt_sets[o]);
+                agree(&b, &ray, cy, n, opt_sets[o]);
+            }
+        free(mem), free(cy);
+    }
+}
+
+/* The cylinders copied: the caller's array may change or go once built. */
+static void test_the_batch_keeps_its_own_copy(void)
+{
+    CYL(cylinder) cy[3] = {{{0, 0, 0}, {0, 0, 1}, 1, 2}, {{5, 0, 0}, {0, 0, 1}, 1, 2}, {{9, 0, 0}, {0, 1, 0}, 1, 2}};
+    const CYL(cylinder) keep[3] = {{{0, 0, 0}, {0, 0, 1}, 1, 2}, {{5, 0, 0}, {0, 0, 1}, 1, 2}, {{9, 0, 0}, {0, 1, 0}, 1, 2}};
+    CYL(ray) ray = {{-5, 0, 0}, {1, 0, 0}, 0, 100};
+    CYL(batch) b;
+    void *mem = build(&b, cy, 3);
+    size_t i = 9;
+    T t = 0;
+    memset(cy, 0xff, sizeof cy); /* NaNs */
+    TEST_ASSERT_EQUAL_INT(CYL_HIT, CYL(batch_nearest)(&b, &ray, 0u, &i, &t));
+    TEST_ASSERT_TRUE(i == 0 && eq(t, 4)); /* the wall of the first at x = -1 */
+    agree(&b, &ray, keep, 3, 0u);
+    free(mem);
+}
+
+/* Equal t: the lowest index wins, as in the loop; tmin and tmax inclusive on a crossing. */
+static void test_ties_and_range_ends(void)
+{
+    CYL(cylinder) cy[20];
+    CYL(ray) ray = {{-5, 0, 0}, {1, 0, 0}, 0, 100};
+    CYL(batch) b;
+    void *mem;
+    size_t i = 0, k;
+    T t = 0;
+    for (k = 0; k < 20; k++) { /* the same tube twenty times, and a farther one at 13 */
+        CYL(cylinder) c = {{0, 0, 0}, {0, 0, 1}, 1, 2};
+        if (k == 13) c.c[0] = -2;
+        cy[k] = c;
+    }
+    mem = build(&b, cy, 20);
+    TEST_ASSERT_EQUAL_INT(CYL_HIT, CYL(batch_nearest)(&b, &ray, 0u, &i, &t));
+    TEST_ASSERT_TRUE(i == 13 && eq(t, 2));
+    ray.tmin = 2, ray.tmax = 2; /* exactly on 13's crossing */
+    TEST_ASSERT_EQUAL_INT(CYL_HIT, CYL(batch_nearest)(&b, &ray, 0u, &i, &t));
+    TEST_ASSERT_TRUE(i == 13 && eq(t, 2));
+    ray.tmin = 4, ray.tmax = 4; /* the others' entries: the first of them */
+    TEST_ASSERT_EQUAL_INT(CYL_HIT, CYL(batch_nearest)(&b, &ray, 0u, &i, &t));
+    TEST_ASSERT_TRUE(i == 0 && eq(t, 4));
+    ray.tmin = (T)4.5, ray.tmax = (T)5.5; /* between crossings */
+    TEST_ASSERT_EQUAL_INT(CYL_MISS, CYL(batch_nearest)(&b, &ray, 0u, &i, &t));
+    TEST_ASSERT_EQUAL_INT(0, CYL(batch_any)(&b, &ray, 0u));
+    free(mem);
+}
+
+/* Cylinders and rays beyond the filter's range are asked, not dropped. */
+static void test_out_of_range_inputs_agree(void)
+{
+    enum { N = 40 };
+    CYL(cylinder) cy[N];
+    CYL(batch) b;
+    void *mem;
+    size_t k, r;
+    rng_state = 7u;
+    scene(cy, N, 10);
+    cy[3].c[0] = T_HUGE, cy[3].a[1] = T_HUGE / 4; /* far and long-axed */
+    cy[11].r = (T)1e-30, cy[11].c[0] = cy[11].c[1] = cy[11].c[2] = 0; /* a thread at the origin */
+    cy[17].a[0] = cy[17].a[1] = 0, cy[17].a[2] = (T)1e-30;
+    mem = build(&b, cy, N);
+    for (r = 0; r < 300; r++) {
+        CYL(ray) ray = ray_for(cy, N, 10, CYL_CAPS);
+        if (r % 3 == 0) for (k = 0; k < 3; k++) ray.o[k] *= T_HUGE / 100; /* the ray out of range */
+        if (r % 5 == 0) ray.d[0] *= (T)1e-30, ray.d[1] *= (T)1e-30, ray.d[2] *= (T)1e-30;
+        agree(&b, &ray, cy, N, CYL_CAPS);
+        agree(&b, &ray, cy, N, 0u);
+    }
+    free(mem);
+}
+
+#ifdef T_DOUBLE
+/* Found by fuzz/fuzz_batch.c: a block whose every cylinder is outside the filter's range (axes of
+   length 1e-200) and which the tube test, underflowing, rejects whole: the flag must still ask. */
+static void test_fuzz_block_of_out_of_range_cylinders(void)
+{
+    CYL(cylinder) cy[2] = {{{4.80562449e-07, -4.40619763e-16, 1e-200}, {0.0011100769, 5.59448321e-17, 1e-200}, 1e-200, 1e-200},
+                           {{-3.07559967e-05, 1e-200, -2.23779328e-16}, {1e-200, 1e-200, -1e-200}, 2.90407092e+23, 3.12638804e-13}};
+    CYL(ray) ray = {{2.927345865710862e-18, 3.3953950762111162e-12, 1.101868699230975e+21},
+                    {1.101868699230975e+21, 1.1067325868285352e+21, 1e-200}, 0, (T)INFINITY};
+    CYL(batch) b;
+    void *mem = build(&b, cy, 2);
+    size_t i = 9;
+    T t = 0;
+    TEST_ASSERT_EQUAL_INT(CYL_HIT, CYL(batch_nearest)(&b, &ray, CYL_CAPS, &i, &t)); /* cylinder 1 */
+    TEST_ASSERT_TRUE(i == 1);
+    agree(&b, &ray, cy, 2, CYL_CAPS);
+    agree(&b, &ray, cy, 2, 0u);
+    free(mem);
+}
+#endif
+
+/* The filter drops what is certainly missed: in a sparse scene, far from every cylinder
+   being asked (else the batch would be the scalar loop with extra steps). */
+static void test_the_filter_drops_certain_misses(void)
+{
+    enum { N = 1024 };
+    CYL(cylinder) *cy = (CYL(cylinder) *)malloc(N * sizeof *cy);
+    CYL(batch) b;
+    void *mem;
+    size_t k, r, asked = 0, rays = 100;
+    rng_state = 99u;
+    TEST_ASSERT_NOT_NULL(cy);
+    scene(cy, N, 100);
+    mem = build(&b, cy, N);
+    for (r = 0; r < rays; r++) {
+#ifdef T_DOUBLE
+        cyl__db_q q;
+#else
+        cyl__fb_q q;
+#endif
+        CYL(ray) ray = ray_for(cy, N, 100, CYL_CAPS);
+        ray.tmin = 0, ray.tmax = (T)INFINITY;
+#ifdef T_DOUBLE
+        TEST_ASSERT_TRUE(cyl__db_query(&q, &ray));
+        for (k = 0; k < b.nb; k++) {
+            unsigned m = cyl__db_block(&b, k, &q, 1, q.tmax);
+#else
+        TEST_ASSERT_TRUE(cyl__fb_query(&q, &ray));
+        for (k = 0; k < b.nb; k++) {
+            unsigned m = cyl__fb_block(&b, k, &q, 1, q.tmax);
+#endif
+            for (; m; m &= m - 1u) asked++;
+        }
+    }
+    /* about 4 % of such lines meet a tube's extent; the infinite ones more: 15 % is a failure */
+    TEST_ASSERT_TRUE_MESSAGE(asked * 100 < 15 * N * rays, "the filter keeps too much");
+    free(mem), free(cy);
+}
+
+static void test_empty_batch(void)
+{
+    CYL(batch) b;
+    CYL(ray) ray = {{0, 0, 0}, {1, 0, 0}, 0, 1}, bad = {{0, 0, 0}, {0, 0, 0}, 0, 1};
+    size_t i = 5;
+    T t = 3;
+    TEST_ASSERT_EQUAL_INT(0, CYL(batch_build)(&b, NULL, NULL, 0));
+    TEST_ASSERT_EQUAL_INT(CYL_MISS, CYL(batch_nearest)(&b, &ray, CYL_CAPS, &i, &t));
+    TEST_ASSERT_EQUAL_INT(0, CYL(batch_any)(&b, &ray, CYL_CAPS));
+    TEST_ASSERT_TRUE(i == 5 && eq(t, 3));
+    TEST_ASSERT_EQUAL_INT(CYL_E_ZERO_DIR, CYL(batch_nearest)(&b, &bad, CYL_CAPS, &i, &t));
+    TEST_ASSERT_EQUAL_INT(CYL_E_ZERO_DIR, CYL(batch_any)(&b, &bad, CYL_CAPS));
+}
+
+/* Build errors: the first bad cylinder's, in the scalar order; nothing written. */
+static void test_build_errors(void)
+{
+    CYL(cylinder) cy[4] = {{{0, 0, 0}, {0, 0, 1}, 1, 2}, {{0, 0, 0}, {0, 0, 1}, 1, 2},
+                           {{0, 0, 0}, {0, 0, 1}, 1, 2}, {{0, 0, 0}, {0, 0, 1}, 1, 2}};
+    static unsigned char mem[4096], ref[4096];
+    CYL(batch) b, b0;
+    memset(mem, 0x5a, sizeof mem), memset(ref, 0x5a, sizeof ref), memset(&b, 0x3c, sizeof b), b0 = b;
+    TEST_ASSERT_TRUE(CYL(batch_bytes)(4) <= sizeof mem);
+    TEST_ASSERT_EQUAL_INT(CYL_E_NULL, CYL(batch_build)(NULL, mem, cy, 4));
+    TEST_ASSERT_EQUAL_INT(CYL_E_NULL, CYL(batch_build)(&b, NULL, cy, 4));
+    TEST_ASSERT_EQUAL_INT(CYL_E_NULL, CYL(batch_build)(&b, mem, NULL, 4));
+    cy[2].h = 0, cy[3].r = -1; /* the first error is cylinder 2's: CYL_E_HEIGHT */
+    TEST_ASSERT_EQUAL_INT(CYL_E_HEIGHT, CYL(batch_build)(&b, mem, cy, 4));
+    cy[1].a[0] = cy[1].a[2] = 0; /* now cylinder 1's: CYL_E_ZERO_AXIS */
+    TEST_ASSERT_EQUAL_INT(CYL_E_ZERO_AXIS, CYL(batch_build)(&b, mem, cy, 4));
+    cy[1].c[1] = (T)NAN; /* the scalar order: non-finite before a zero axis */
+    TEST_ASSERT_EQUAL_INT(CYL_E_NONFINITE, CYL(batch_build)(&b, mem, cy, 4));
+    cy[0].r = (T)INFINITY;
+    TEST_ASSERT_EQUAL_INT(CYL_E_RADIUS, CYL(batch_build)(&b, mem, cy, 4));
+    TEST_ASSERT_TRUE_MESSAGE(memcmp(mem, ref, sizeof mem) == 0, "memory written on an error");
+    TEST_ASSERT_TRUE_MESSAGE(memcmp(&b, &b0, sizeof b) == 0, "the batch written on an error");
+    TEST_ASSERT_TRUE(CYL(batch_bytes)(SIZE_MAX / 2) == 0); /* too large: 0 */
+}
+
+/* Query errors: the scalar call's, in its order; *i and *t untouched. */
+static void test_query_errors(void)
+{
+    CYL(cylinder) cy[1] = {{{0, 0, 0}, {0, 0, 1}, 1, 2}};
+    CYL(ray) ray = {{-5, 0, 0}, {1, 0, 0}, 0, 100}, bad;
+    CYL(batch) b;
+    void *mem = build(&b, cy, 1);
+    size_t i = 5;
+    T t = 3;
+    TEST_ASSERT_EQUAL_INT(CYL_E_NULL, CYL(batch_nearest)(NULL, &ray, 0u, &i, &t));
+    TEST_ASSERT_EQUAL_INT(CYL_E_NULL, CYL(batch_nearest)(&b, NULL, 0u, &i, &t));
+    TEST_ASSERT_EQUAL_INT(CYL_E_NULL, CYL(batch_nearest)(&b, &ray, 0u, NULL, &t));
+    TEST_ASSERT_EQUAL_INT(CYL_E_NULL, CYL(batch_nearest)(&b, &ray, 0u, &i, NULL));
+    TEST_ASSERT_EQUAL_INT(CYL_E_NULL, CYL(batch_any)(&b, NULL, 0u));
+    TEST_ASSERT_EQUAL_INT(CYL_E_OPTION, CYL(batch_nearest)(&b, &ray, 0x80u, &i, &t));
+    TEST_ASSERT_EQUAL_INT(CYL_E_OPTION, CYL(batch_any)(&b, &ray, 0x80u));
+    bad = ray, bad.o[1] = (T)INFINITY;
+    TEST_ASSERT_EQUAL_INT(CYL_E_NONFINITE, CYL(batch_nearest)(&b, &bad, 0u, &i, &t));
+    bad = ray, bad.tmin = 5, bad.tmax = 1;
+    TEST_ASSERT_EQUAL_INT(CYL_E_TRANGE, CYL(batch_nearest)(&b, &bad, 0u, &i, &t));
+    TEST_ASSERT_EQUAL_INT(CYL_E_TRANGE, CYL(batch_any)(&b, &bad, 0u));
+    TEST_ASSERT_TRUE(i == 5 && eq(t, 3));
+    free(mem);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_random_scenes_agree_with_the_scalar_loop);
+    RUN_TEST(test_the_batch_keeps_its_own_copy);
+    RUN_TEST(test_ties_and_range_ends);
+    RUN_TEST(test_out_of_range_inputs_agree);
+    RUN_TEST(test_the_filter_drops_certain_misses);
+#ifdef T_DOUBLE
+    RUN_TEST(test_fuzz_block_of_out_of_range_cylinders);
+#endif
+    RUN_TEST(test_empty_batch);
+    RUN_TEST(test_build_errors);
+    RUN_TEST(test_query_errors);
+    return UNITY_END();
+}

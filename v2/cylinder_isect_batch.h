@@ -1,0 +1,374 @@
+/* cylinder_isect_batch.h - v2.0.0 (in development beside v1) - one ray against many cylinders.
+
+   Staged beside v2/cylinder_isect.h, whose API it extends and which it includes; it joins that
+   header when v2 replaces v1 (issue 31). No allocation: the caller gives the memory.
+
+   QUICK START
+       #include "cylinder_isect_batch.h"
+       void *mem = malloc(cylf_batch_bytes(n));                  // any alignment
+       cylf_batch b;
+       if (cylf_batch_build(&b, mem, cyls, n) == 0) {            // checks and copies cyls
+           size_t i; float t;
+           if (cylf_batch_nearest(&b, &ray, CYL_CAPS, &i, &t) == CYL_HIT)
+               cylf_intersect(&ray, &cyls[i], CYL_CAPS, &hit);   // the full hit, if wanted
+           if (cylf_batch_any(&b, &shadow, CYL_CAPS) == 1) ...   // something in range is hit
+       }
+
+   CONTRACT (cyld_* alike, in double)
+   int cylf_batch_nearest(const cylf_batch *b, const cylf_ray *ray, unsigned opts, size_t *i, float *t)
+       What a loop of cylf_intersect(ray, &cyls[k], opts, &hit) over k = 0 .. n−1 keeping the
+       smallest hit.t (the lowest k among equal ones) gives: CYL_HIT with *i = k and *t = hit.t,
+       the same bits; CYL_MISS (n = 0 too) when every call misses; or the error the calls give
+       (the ray's and the options', in the scalar order). *i and *t are written on a hit only.
+   int cylf_batch_any(const cylf_batch *b, const cylf_ray *ray, unsigned opts)
+       1 if cylf_occluded(ray, &cyls[k], opts) is 1 for some k, 0 if for none, or the error.
+   Every option of the scalar API counts, CYL_PRECISE included: each answer is a scalar call's.
+   A vector filter first drops the cylinders that certainly give no hit at or before the best t
+   found so far, t range included: the infinite tube, the t interval it leaves and the slab
+   between the cap planes, each compared with a bound on its rounding and on the scalar call's
+   (N9 of cylinder_isect.h, twice over). The rest, a few per ray in a scene, take the scalar
+   call, in index order. Not dropped, so asked: rays within about √u of a tangency, near the
+   axis' direction, or far outside the range below; a scene of rays parallel to the axes of
+   cylinders parallel to them (an axis-aligned lidar looking down on stems) pays a scalar call
+   for every cylinder whose slab its range crosses.
+   size_t cylf_batch_bytes(size_t n)
+       The memory a batch of n cylinders takes (any alignment); 0 if n is too large for size_t.
+   int cylf_batch_build(cylf_batch *b, void *mem, const cylf_cylinder *cyls, size_t n)
+       0, or the first error a cylinder gives in the scalar order (CYL_E_NONFINITE, _ZERO_AXIS,
+       _RADIUS, _HEIGHT); CYL_E_NULL for b NULL, or mem or cyls NULL with n > 0. On an error
+       nothing is written. mem holds cylf_batch_bytes(n) bytes and lives as long as b is used;
+       cyls is copied into it. A batch is read only by queries: threads may share it.
+
+   LAYOUT (in mem, 64-byte aligned): blocks of CYL__BW lanes (8 in double, 16 where the float
+   API computes in float), structure of arrays, each field of a block one 64-byte line: the
+   center and axis (c, a), r², |a|², (h/2)|a|, |a| rounded up, and 0, or NaN for a cylinder
+   outside the filter's range (each of |c|, |a|, r, h/2 within 2^±96 in double, 2^±16 in
+   float: else always asked); the last block padded; then the cylinders as given.
+
+   CODE: the filter is written once over a vector of a block's lanes: GCC vector extensions
+   where the compiler has them (gcc, clang), whatever instruction set the build targets (SSE2,
+   AVX2, AVX-512, NEON; square roots by the widest one its feature macros name), else, or with
+   CYL_BATCH_PORTABLE, the same text over one lane at a time. `make bench-batch` measures both.
+*/
+#ifndef CYLINDER_ISECT_BATCH_H
+#define CYLINDER_ISECT_BATCH_H
+#include "cylinder_isect.h"
+
+/* CYL__BVEC: the bytes of the instruction set's vector (the filter's), 0 for the portable form. */
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(CYL_BATCH_PORTABLE) && \
+    (defined(__SSE2__) || (defined(__aarch64__) && defined(__ARM_NEON)))
+#if defined(__AVX512F__)
+#define CYL__BVEC 64
+#elif defined(__AVX__)
+#define CYL__BVEC 32
+#else
+#define CYL__BVEC 16
+#endif
+#if defined(__SSE2__)
+#include <immintrin.h>
+#else
+#include <arm_neon.h>
+#endif
+#else
+#define CYL__BVEC 0
+#endif
+
+/* One API's batch: B its names, BR its type, BK the filter's (the API's working type), BW the
+   lanes of a block (64 bytes of BK), BI an integer as wide as BK. */
+#ifndef CYL_NO_DOUBLE
+#define CYL__BN(x) cyld_##x
+#define CYL__BP(x) cyl__db_##x
+#define CYL__BS(x) cyl__d_##x
+#define CYL__BR double
+#define CYL__BK double
+#define CYL__BI int64_t
+#define CYL__BW 8
+#define CYL__BTANG CYL_TANGENT_TOL
+#include "cylinder_isect_batch.h"
+#endif
+#ifndef CYL_NO_FLOAT
+#define CYL__BN(x) cylf_##x
+#define CYL__BP(x) cyl__fb_##x
+#define CYL__BS(x) cyl__f_##x
+#define CYL__BR float
+#define CYL__BTANG CYL_TANGENT_TOLF
+#if CYL_FLOAT_WIDE
+#define CYL__BK double
+#define CYL__BI int64_t
+#define CYL__BW 8
+#else
+#define CYL__BK float
+#define CYL__BI int32_t
+#define CYL__BW 16
+#endif
+#include "cylinder_isect_batch.h"
+#endif
+#endif /* CYLINDER_ISECT_BATCH_H */
+
+#if defined(CYL__BP) && !defined(CYL__BBODY) /* one API's batch, written once */
+#define CYL__BBODY
+#define CYL__BU ((CYL__BK)(sizeof(CYL__BK) == 8 ? 1.1102230246251565e-16 : 5.9604644775390625e-08)) /* u */
+#define CYL__BLIM ((CYL__BK)(sizeof(CYL__BK) == 8 ? 7.9228162514264338e+28 : 65536.0))        /* 2^96, 2^16 */
+#define CYL__BF 11 /* fields: c (3), a (3), r², |a|², H|a|, |a|, flag */
+
+typedef struct CYL__BN(batch) {
+    const CYL__BK *blocks;          /* nb blocks of CYL__BF fields of CYL__BW lanes */
+    const CYL__BN(cylinder) *cyls;  /* the n cylinders as given */
+    size_t n, nb;
+} CYL__BN(batch);
+
+/* CYL__BL lanes at once: a vector of the instruction set's (GCC's extension), or one lane (the
+   portable form); a block is BW / BL of them. */
+#if CYL__BVEC
+typedef CYL__BK CYL__BP(v) __attribute__((vector_size(CYL__BVEC)));
+typedef CYL__BI CYL__BP(m) __attribute__((vector_size(CYL__BVEC)));
+#define CYL__BL (CYL__BVEC / (int)sizeof(CYL__BK))
+#define CYL__BLOAD(p) (*(const CYL__BP(v) *)(const void *)(p))
+#define CYL__BSEL(k_, x_, y_) ((CYL__BP(v))(((k_) & (CYL__BP(m))(x_)) | (~(k_) & (CYL__BP(m))(y_))))
+#define CYL__BNOT(k_) (~(k_))
+#define CYL__BFLAG(x_) ((CYL__BP(m))(x_)) /* the flag's bits: 0, or all ones */
+#else
+typedef CYL__BK CYL__BP(v);
+typedef int CYL__BP(m);
+#define CYL__BL 1
+#define CYL__BLOAD(p) (*(p))
+#define CYL__BSEL(k_, x_, y_) ((k_) ? (x_) : (y_))
+#define CYL__BNOT(k_) (!(k_))
+#define CYL__BFLAG(x_) (!((x_) <= 0))
+#endif
+#define CYL__BABS(x_) CYL__BSEL((x_) < 0, -(x_), (x_))
+#define CYL__BMAX(x_, y_) CYL__BSEL((x_) > (y_), (x_), (y_))
+#define CYL__BMIN(x_, y_) CYL__BSEL((x_) < (y_), (x_), (y_))
+CYL__ALWAYS void CYL__BP(sqrt)(CYL__BP(v) *xp)
+{
+    const CYL__BP(v) x = *xp;
+#if CYL__BVEC /* the intrinsic's type is the same vector: a copy, no instruction */
+#define CYL__BSQ(t, f) { t y; __builtin_memcpy(&y, &x, sizeof y); y = f(y); __builtin_memcpy(xp, &y, sizeof y); }
+#if CYL__BVEC == 64
+    if (sizeof(CYL__BK) == 8) CYL__BSQ(__m512d, _mm512_sqrt_pd) else CYL__BSQ(__m512, _mm512_sqrt_ps)
+#elif CYL__BVEC == 32
+    if (sizeof(CYL__BK) == 8) CYL__BSQ(__m256d, _mm256_sqrt_pd) else CYL__BSQ(__m256, _mm256_sqrt_ps)
+#elif defined(__SSE2__)
+    if (sizeof(CYL__BK) == 8) CYL__BSQ(__m128d, _mm_sqrt_pd) else CYL__BSQ(__m128, _mm_sqrt_ps)
+#else
+    if (sizeof(CYL__BK) == 8) CYL__BSQ(float64x2_t, vsqrtq_f64) else CYL__BSQ(float32x4_t, vsqrtq_f32)
+#endif
+#undef CYL__BSQ
+#else
+    *xp = sizeof(CYL__BK) == 8 ? (CYL__BK)CYL_SQRT((double)x) : (CYL__BK)CYL_SQRTF((float)x);
+#endif
+}
+
+/* Bit j set where lane j of m is (the candidates, in index order). */
+CYL__ALWAYS unsigned CYL__BP(bits)(const CYL__BP(m) *mp)
+{
+    const CYL__BP(m) m = *mp;
+#if CYL__BVEC
+#define CYL__BMV(t, f) { t y; __builtin_memcpy(&y, &m, sizeof y); return (unsigned)f; }
+#if CYL__BVEC == 64
+    if (sizeof(CYL__BK) == 8) CYL__BMV(__m512i, _mm512_test_epi64_mask(y, y)) else CYL__BMV(__m512i, _mm512_test_epi32_mask(y, y))
+#elif CYL__BVEC == 32
+    if (sizeof(CYL__BK) == 8) CYL__BMV(__m256d, _mm256_movemask_pd(y)) else CYL__BMV(__m256, _mm256_movemask_ps(y))
+#elif defined(__SSE2__)
+    if (sizeof(CYL__BK) == 8) CYL__BMV(__m128d, _mm_movemask_pd(y)) else CYL__BMV(__m128, _mm_movemask_ps(y))
+#else
+    {
+        unsigned b = 0, j;
+        for (j = 0; j < (unsigned)CYL__BL; j++) b |= (unsigned)(m[j] != 0) << j;
+        return b;
+    }
+#endif
+#undef CYL__BMV
+#else
+    return m != 0;
+#endif
+}
+
+/* The ray in the filter's type, once per query. */
+typedef struct CYL__BP(q) { CYL__BK o[3], d[3], nd, tmin, tmax; } CYL__BP(q);
+
+/* The filter (the contract's "how"): of lanes p[j], those a scalar call might hit at a t in
+   [tmin, min(tmax, best)]. Every test rejects only where certain; a NaN anywhere rejects nothing.
+   The tube: D = r²A − P² beyond the tangent band by more than twice N9's bound k·S·A/|a|² (k =
+   128u(1 + |a||d|/|s|) <= 128u(1.5 + |a|²|d|²/(2A)), S = |a|²(|w|² + r²)). Its t interval: the
+   roots tc ± √(|a|²D)/A, each within twice N9's root bound (where first order, else unbounded)
+   plus their formula's rounding. The slab: the axial coordinate z0 + tζ at both ends of that
+   interval on one side of the cap planes, by more than twice N9's bound at the farther end. */
+CYL__ALWAYS void CYL__BP(filter)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BK best, CYL__BP(m) *out)
+{
+    const CYL__BK u = CYL__BU, k0 = 128 * CYL__BU;
+    const CYL__BK *c = p, *a = p + 3 * CYL__BW, *r2 = p + 6 * CYL__BW, *aa = p + 7 * CYL__BW;
+    const CYL__BK *Ha = p + 8 * CYL__BW, *na = p + 9 * CYL__BW, *fl = p + 10 * CYL__BW;
+    const CYL__BP(v) zero = {0};
+    CYL__BP(v) w0, w1, w2, a0, a1, a2, s0, s1, s2, m0, m1, m2, A, B, P, z0, ze, ww, D, ad, S, tc, h, T, er, lo, hi, e, zl, zh;
+    const CYL__BP(m) out_of_range = CYL__BFLAG(CYL__BLOAD(fl)); /* always asked */
+    CYL__BP(m) keep;
+    a0 = CYL__BLOAD(a), a1 = CYL__BLOAD(a + CYL__BW), a2 = CYL__BLOAD(a + 2 * CYL__BW);
+    w0 = q->o[0] - CYL__BLOAD(c), w1 = q->o[1] - CYL__BLOAD(c + CYL__BW), w2 = q->o[2] - CYL__BLOAD(c + 2 * CYL__BW);
+    s0 = a1 * q->d[2] - a2 * q->d[1], s1 = a2 * q->d[0] - a0 * q->d[2], s2 = a0 * q->d[1] - a1 * q->d[0];
+    m0 = a1 * w2 - a2 * w1, m1 = a2 * w0 - a0 * w2, m2 = a0 * w1 - a1 * w0;
+    A = s0 * s0 + s1 * s1 + s2 * s2, B = m0 * s0 + m1 * s1 + m2 * s2, P = w0 * s0 + w1 * s1 + w2 * s2;
+    z0 = a0 * w0 + a1 * w1 + a2 * w2, ze = a0 * q->d[0] + a1 * q->d[1] + a2 * q->d[2];
+    ww = w0 * w0 + w1 * w1 + w2 * w2, ad = A + ze * ze, S = ww + CYL__BLOAD(r2);
+    D = CYL__BLOAD(r2) * A - P * P;
+    /* the tube: kept unless D is below the band by twice its bound */
+    keep = CYL__BNOT(D + (CYL__BK)CYL__BTANG * CYL__BLOAD(r2) * A + k0 * (3 * A + ad) * S < 0); /* 2kSA/|a|²: kA <= 64u(3A + |a|²|d|²) */
+    *out = keep | out_of_range;
+    if (!CYL__BP(bits)(out)) return;
+    /* its t interval [tc − h − er, tc + h + er] (er: N9's root bound, twice, where first order) */
+    e = 1 / A, tc = -B * e, h = CYL__BMAX(D, zero) * CYL__BLOAD(aa);
+    CYL__BP(sqrt)(&h), h *= e;
+    T = CYL__BABS(tc) + h;
+    er = 2 * (k0 * ((CYL__BK)1.5 + (CYL__BK)0.5 * ad * e) * (CYL__BLOAD(aa) * S + T * T * ad) / (h * A) + 4 * u * T) + 4 * u * T;
+    er = CYL__BSEL(er * A <= (CYL__BK)0.5 * (h * A), er, zero + (CYL__BK)CYL__HUGE);
+    lo = CYL__BMAX(tc - h - er, zero + q->tmin);
+    hi = CYL__BMIN(tc + h + er, zero + (best < q->tmax ? best : q->tmax));
+    keep &= CYL__BNOT(lo > hi);
+    /* the slab: z0 + tζ at lo and hi, beyond one cap plane by more than twice N9's bound */
+    T = CYL__BMAX(CYL__BABS(lo), CYL__BABS(hi));
+    e = 2 * (64 * u * (CYL__BLOAD(na) * (CYL__BABS(w0) + CYL__BABS(w1) + CYL__BABS(w2)) + CYL__BLOAD(Ha)
+                       + T * CYL__BLOAD(na) * q->nd) + 2 * u * T * CYL__BABS(ze)) + CYL__BLOAD(Ha);
+    zl = z0 + lo * ze, zh = z0 + hi * ze;
+    keep &= CYL__BNOT(((zl > e) & (zh > e)) | ((zl < -e) & (zh < -e)));
+    *out = keep | out_of_range;
+}
+
+/* The ray in the filter's type; 0 where the filter's bounds could overflow (then every cylinder is asked). */
+CYL__ALWAYS int CYL__BP(query)(CYL__BP(q) *q, const CYL__BN(ray) *ray)
+{
+    CYL__BK om = 0, dm = 0, x;
+    int i;
+    for (i = 0; i < 3; i++) {
+        q->o[i] = (CYL__BK)ray->o[i], q->d[i] = (CYL__BK)ray->d[i];
+        x = q->o[i] < 0 ? -q->o[i] : q->o[i], om = x > om ? x : om;
+        x = q->d[i] < 0 ? -q->d[i] : q->d[i], dm = x > dm ? x : dm;
+    }
+    x = q->d[0] * q->d[0] + q->d[1] * q->d[1] + q->d[2] * q->d[2];
+    q->nd = (sizeof(CYL__BK) == 8 ? (CYL__BK)CYL_SQRT((double)x) : (CYL__BK)CYL_SQRTF((float)x)) * (1 + 4 * CYL__BU);
+    q->tmin = (CYL__BK)ray->tmin, q->tmax = (CYL__BK)ray->tmax;
+    return om <= CYL__BLIM && dm <= CYL__BLIM && dm >= 1 / CYL__BLIM;
+}
+
+/* The candidates of block k (bit j: cylinder k·BW + j), all of them where the ray is out of range. */
+CYL__ALWAYS unsigned CYL__BP(block)(const CYL__BN(batch) *b, size_t k, const CYL__BP(q) *q, int inrange, CYL__BK best)
+{
+    const CYL__BK *p = b->blocks + k * (CYL__BF * CYL__BW);
+    unsigned m = (2u << (CYL__BW - 1)) - 1u;
+    size_t left = b->n - k * CYL__BW;
+    CYL__BP(m) keep;
+    unsigned j;
+    if (inrange) for (m = 0u, j = 0; j < CYL__BW; j += CYL__BL) CYL__BP(filter)(p + j, q, best, &keep), m |= CYL__BP(bits)(&keep) << j;
+    return left < CYL__BW ? m & ((1u << left) - 1u) : m; /* the padding lanes are no cylinders */
+}
+
+/* The lowest set bit's index (m nonzero). */
+CYL__ALWAYS int CYL__BP(ctz)(unsigned m)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return __builtin_ctz(m);
+#else
+    int j = 0;
+    while (!(m & 1u)) m >>= 1, j++;
+    return j;
+#endif
+}
+
+CYL_DEF size_t CYL__BN(batch_bytes)(size_t n)
+{
+    const size_t blk = CYL__BF * CYL__BW * sizeof(CYL__BK), per = CYL__BF * sizeof(CYL__BK) + sizeof(CYL__BN(cylinder));
+    if (n > (SIZE_MAX - 63 - blk) / per) return 0;
+    return 63 + (n / CYL__BW + (n % CYL__BW != 0)) * blk + n * sizeof(CYL__BN(cylinder));
+}
+
+CYL_DEF int CYL__BN(batch_build)(CYL__BN(batch) *b, void *mem, const CYL__BN(cylinder) *cyls, size_t n)
+{
+    static const CYL__BN(ray) probe = {{0, 0, 0}, {1, 0, 0}, 0, 1};
+    const size_t nb = n / CYL__BW + (n % CYL__BW != 0);
+    CYL__BK *blocks, v[CYL__BF], m;
+    CYL__BN(cylinder) *copy;
+    size_t i, k;
+    int rc, f;
+    if (!b || (n && (!mem || !cyls))) return CYL_E_NULL;
+    for (i = 0; i < n; i++)
+        if ((rc = CYL__BS(validate)(&probe, &cyls[i], 0u)) != 0) return rc;
+    if (!n) return b->blocks = NULL, b->cyls = NULL, b->n = b->nb = 0, 0;
+    blocks = (CYL__BK *)(void *)((unsigned char *)mem + ((64u - (unsigned)((uintptr_t)mem & 63u)) & 63u));
+    copy = (CYL__BN(cylinder) *)(void *)(blocks + nb * (CYL__BF * CYL__BW));
+    for (i = 0; i < nb * CYL__BW; i++) { /* the padding lanes repeat the last cylinder */
+        const CYL__BN(cylinder) *cy = &cyls[i < n ? i : n - 1];
+        CYL__BK H = (CYL__BK)cy->h * (CYL__BK)0.5, r = (CYL__BK)cy->r, lim = CYL__BLIM, sa;
+        for (m = 0, k = 0; k < 3; k++) {
+            v[k] = (CYL__BK)cy->c[k], v[3 + k] = (CYL__BK)cy->a[k];
+            if (v[k] > lim || v[k] < -lim) m = lim * 2; /* c out of range */
+            m = v[3 + k] > m ? v[3 + k] : -v[3 + k] > m ? -v[3 + k] : m;
+        }
+        v[6] = r * r, v[7] = v[3] * v[3] + v[4] * v[4] + v[5] * v[5];
+        sa = sizeof(CYL__BK) == 8 ? (CYL__BK)CYL_SQRT((double)v[7]) : (CYL__BK)CYL_SQRTF((float)v[7]);
+        v[8] = H * sa, v[9] = sa * (1 + 4 * CYL__BU);
+        CYL__B(memset)(&v[10], m <= lim && m >= 1 / lim && r <= lim && r >= 1 / lim ? 0 : 0xff, sizeof v[10]); /* NaN: asked */
+        for (f = 0; f < CYL__BF; f++) blocks[(i / CYL__BW) * (CYL__BF * CYL__BW) + (size_t)f * CYL__BW + i % CYL__BW] = v[f];
+    }
+    for (i = 0; i < n; i++) copy[i] = cyls[i];
+    b->blocks = blocks, b->cyls = copy, b->n = n, b->nb = nb;
+    return 0;
+}
+
+CYL_DEF int CYL__BN(batch_nearest)(const CYL__BN(batch) *b, const CYL__BN(ray) *ray, unsigned opts, size_t *index, CYL__BR *t)
+{
+    static const CYL__BN(cylinder) unit = {{0, 0, 0}, {0, 0, 1}, 1, 1};
+    CYL__BP(q) q;
+    CYL__BN(hit) hit;
+    CYL__BR bt = 0;
+    size_t k, i, found = 0;
+    int rc, got = 0, inrange;
+    unsigned m;
+    if (!b || !ray || !index || !t) return CYL_E_NULL;
+    if ((rc = CYL__BS(validate)(ray, &unit, opts)) != 0) return rc;
+    inrange = CYL__BP(query)(&q, ray);
+    for (k = 0; k < b->nb; k++)
+        for (m = CYL__BP(block)(b, k, &q, inrange, got ? (CYL__BK)bt : q.tmax); m; m &= m - 1u) {
+            i = k * CYL__BW + (size_t)CYL__BP(ctz)(m);
+            if (CYL__BN(intersect)(ray, &b->cyls[i], opts, &hit) == CYL_HIT && (!got || hit.t < bt))
+                bt = hit.t, found = i, got = 1;
+        }
+    if (got) *index = found, *t = bt;
+    return got;
+}
+
+CYL_DEF int CYL__BN(batch_any)(const CYL__BN(batch) *b, const CYL__BN(ray) *ray, unsigned opts)
+{
+    static const CYL__BN(cylinder) unit = {{0, 0, 0}, {0, 0, 1}, 1, 1};
+    CYL__BP(q) q;
+    size_t k;
+    int rc, inrange;
+    unsigned m;
+    if (!b || !ray) return CYL_E_NULL;
+    if ((rc = CYL__BS(validate)(ray, &unit, opts)) != 0) return rc;
+    inrange = CYL__BP(query)(&q, ray);
+    for (k = 0; k < b->nb; k++)
+        for (m = CYL__BP(block)(b, k, &q, inrange, q.tmax); m; m &= m - 1u)
+            if (CYL__BN(occluded)(ray, &b->cyls[k * CYL__BW + (size_t)CYL__BP(ctz)(m)], opts) == 1) return 1;
+    return 0;
+}
+
+#undef CYL__BN
+#undef CYL__BP
+#undef CYL__BS
+#undef CYL__BR
+#undef CYL__BK
+#undef CYL__BI
+#undef CYL__BW
+#undef CYL__BU
+#undef CYL__BLIM
+#undef CYL__BF
+#undef CYL__BL
+#undef CYL__BLOAD
+#undef CYL__BSEL
+#undef CYL__BNOT
+#undef CYL__BFLAG
+#undef CYL__BABS
+#undef CYL__BMAX
+#undef CYL__BMIN
+#undef CYL__BTANG
+#undef CYL__BBODY
+#endif /* one API's batch */
