@@ -15,7 +15,12 @@ FUZZ_DIR      := $(BUILD)/fuzz
 FUZZ_HARNESSES := fuzz_isect fuzz_grid
 FUZZ_CORPUS_fuzz_isect := fuzz/corpus
 FUZZ_CORPUS_fuzz_grid  := fuzz/corpus_grid
-FUZZ_HDRS     := $(HDR) fuzz/fuzz_check.h fuzz/fuzz_grid.h fuzz/fuzz_ref.h
+# v2 only: the batch (v2/cylinder_isect_batch.h) against the scalar loops it stands for.
+FUZZ_CORPUS_fuzz_batch := fuzz/corpus_batch
+ifeq ($(V),2)
+FUZZ_HARNESSES += fuzz_batch
+endif
+FUZZ_HDRS     := $(HDR) fuzz/fuzz_check.h fuzz/fuzz_grid.h fuzz/fuzz_ref.h $(if $(filter 2,$(V)),$(V2_DIR)/cylinder_isect_batch.h)
 # The harness runs where it is built: a real FMA makes the library's error-free steps fast.
 # The gcc replay is built without it, so libm's fma path is checked too.
 FUZZ_ARCH     ?= -march=native
@@ -67,7 +72,8 @@ fuzz-build: $(addprefix $(FUZZ_DIR)/,$(FUZZ_HARNESSES))
 fuzz: fuzz-build
 	@mkdir -p $(FUZZ_DIR)/artifacts
 	@bad=0; for h in $(FUZZ_HARNESSES); do \
-	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect);; fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid);; esac; \
+	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect);; fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid);; \
+	              fuzz_batch) c=$(FUZZ_CORPUS_fuzz_batch);; esac; \
 	  mkdir -p $(FUZZ_DIR)/work/$$h; \
 	  echo "== $$h: $(FUZZ_SECONDS) s on $$c"; \
 	  if $(FUZZ_DIR)/$$h -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -max_len=512 \
@@ -94,7 +100,8 @@ fuzz-seeds: $(FUZZ_DIR)/gen_seeds
 fuzz-merge: fuzz-build fuzz-seeds
 	@set -e; for h in $(FUZZ_HARNESSES); do \
 	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect); extra=$(FUZZ_DIR)/seeds;; \
-	              fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid); extra=$(FUZZ_DIR)/seeds_grid;; esac; \
+	              fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid); extra=$(FUZZ_DIR)/seeds_grid;; \
+	              fuzz_batch) c=$(FUZZ_CORPUS_fuzz_batch); extra=;; esac; \
 	  rm -rf $(FUZZ_DIR)/merged/$$h && mkdir -p $(FUZZ_DIR)/merged/$$h $(FUZZ_DIR)/work/$$h $$c; \
 	  $(FUZZ_DIR)/$$h -merge=1 -use_counters=0 -artifact_prefix=$(FUZZ_DIR)/artifacts/merge-$$h- $(FUZZ_DIR)/merged/$$h $$c $$extra $(FUZZ_DIR)/work/$$h >$(FUZZ_DIR)/$$h-merge.log 2>&1 \
 	    || { tail -n 20 $(FUZZ_DIR)/$$h-merge.log; exit 1; }; \
