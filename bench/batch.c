@@ -48,6 +48,12 @@ static int cmp_double(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
+#if defined(__GNUC__) || defined(__clang__)
+#define BENCH_NOINLINE __attribute__((noinline))
+#else
+#define BENCH_NOINLINE
+#endif
+
 static const char *key = "?";
 static int runs = 5;
 static double tests = 4e6;
@@ -63,6 +69,24 @@ static double tests = 4e6;
             if (cyl##P##_intersect(ray, &cy[i], CYL_CAPS, &h) == CYL_HIT && (!got || h.t < *t))       \
                 *idx = i, *t = h.t, got = 1;                                                          \
         return got;                                                                                   \
+    }                                                                                                 \
+    /* The timed loops, each a function of its own (noinline), as a renderer's call site: what the \
+       compiler makes of it does not depend on the checking code around it. */                      \
+    BENCH_NOINLINE static double time_loop_##P(const cyl##P##_ray *rays, size_t nr, const cyl##P##_cylinder *cy, size_t n) \
+    {                                                                                                 \
+        double sum = 0;                                                                               \
+        size_t r, ii = 0;                                                                             \
+        T tt = 0;                                                                                     \
+        for (r = 0; r < nr; r++) sum += loop_##P(&rays[r], cy, n, &ii, &tt) + (double)tt;             \
+        return sum;                                                                                   \
+    }                                                                                                 \
+    BENCH_NOINLINE static double time_batch_##P(const cyl##P##_ray *rays, size_t nr, const cyl##P##_batch *b) \
+    {                                                                                                 \
+        double sum = 0;                                                                               \
+        size_t r, ii = 0;                                                                             \
+        T tt = 0;                                                                                     \
+        for (r = 0; r < nr; r++) sum += cyl##P##_batch_nearest(b, &rays[r], CYL_CAPS, &ii, &tt) + (double)tt; \
+        return sum;                                                                                   \
     }                                                                                                 \
     static void bench_##P(size_t n)                                                                   \
     {                                                                                                 \
@@ -101,13 +125,11 @@ static double tests = 4e6;
             hits += (size_t)r1;                                                                       \
         }                                                                                             \
         for (k = 0; k < (size_t)runs; k++) {                                                          \
-            size_t ii = 0;                                                                            \
-            T tt = 0;                                                                                 \
             t0 = now();                                                                               \
-            for (r = 0; r < nr; r++) sink += loop_##P(&rays[r], cy, n, &ii, &tt) + (double)tt;        \
+            sink += time_loop_##P(rays, nr, cy, n);                                                   \
             tl[k] = (now() - t0) / (double)(nr * n) * 1e9;                                            \
             t0 = now();                                                                               \
-            for (r = 0; r < nr; r++) sink += cyl##P##_batch_nearest(&b, &rays[r], CYL_CAPS, &ii, &tt) + (double)tt; \
+            sink += time_batch_##P(rays, nr, &b);                                                     \
             tb[k] = (now() - t0) / (double)(nr * n) * 1e9;                                            \
         }                                                                                             \
         qsort(tl, (size_t)runs, sizeof tl[0], cmp_double), qsort(tb, (size_t)runs, sizeof tb[0], cmp_double); \

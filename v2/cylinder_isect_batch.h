@@ -28,7 +28,7 @@
    between the cap planes, each compared with a bound on its rounding and on the scalar call's
    (N9 of cylinder_isect.h, twice over). The rest, a few per ray in a scene, take the scalar
    call, in index order. Not dropped, so asked: rays within about √u of a tangency, near the
-   axis' direction, or far outside the range below; a scene of rays parallel to the axes of
+   axis' direction, or outside the range below; a scene of rays parallel to the axes of
    cylinders parallel to them (an axis-aligned lidar looking down on stems) pays a scalar call
    for every cylinder whose slab its range crosses.
    size_t cylf_batch_bytes(size_t n)
@@ -39,16 +39,21 @@
        nothing is written. mem holds cylf_batch_bytes(n) bytes and lives as long as b is used;
        cyls is copied into it. A batch is read only by queries: threads may share it.
 
-   LAYOUT (in mem, 64-byte aligned): blocks of CYL__BW lanes (8 in double, 16 where the float
-   API computes in float), structure of arrays, each field of a block one 64-byte line: the
-   center and axis (c, a), r², |a|², (h/2)|a|, |a| rounded up, and 0, or NaN for a cylinder
-   outside the filter's range (each of |c|, |a|, r, h/2 within 2^±96 in double, 2^±16 in
-   float: else always asked); the last block padded; then the cylinders as given.
+   The filter works in the API's own type (the float API's in float, whose bounds are wider
+   than the scalar call's double: more cylinders asked, twice the lanes per instruction).
+   Outside its range every cylinder is asked: a ray whose |o| exceeds 2^96 (float: 2^24), or
+   whose largest component of d lies outside 2^±96 (2^-12 .. 2^12); a cylinder likewise for
+   |c|, for a (2^-12 .. 2^16) and r (2^±24).
 
-   CODE: the filter is written once over a vector of a block's lanes: GCC vector extensions
-   where the compiler has them (gcc, clang), whatever instruction set the build targets (SSE2,
-   AVX2, AVX-512, NEON; square roots by the widest one its feature macros name), else, or with
-   CYL_BATCH_PORTABLE, the same text over one lane at a time. `make bench-batch` measures both.
+   LAYOUT (in mem, 64-byte aligned): blocks of 8 cylinders in double, 16 in float, structure of
+   arrays, each field of a block one 64-byte line: the center and axis (c, a), r², |a|²,
+   (h/2)|a|, |a| rounded up, and a flag (all bits set: outside the range); the last block
+   padded; then the cylinders as given.
+
+   CODE: the filter is written once over a vector: GCC vector extensions where the compiler has
+   them (gcc, clang) at the width of the instruction set the build targets (SSE2, AVX2, AVX-512,
+   NEON; square roots, fused multiply-adds and masks by its intrinsics), else, or with
+   CYL_BATCH_PORTABLE, the same text over one lane. `make bench-batch` measures each form.
 */
 #ifndef CYLINDER_ISECT_BATCH_H
 #define CYLINDER_ISECT_BATCH_H
@@ -92,15 +97,9 @@
 #define CYL__BS(x) cyl__f_##x
 #define CYL__BR float
 #define CYL__BTANG CYL_TANGENT_TOLF
-#if CYL_FLOAT_WIDE
-#define CYL__BK double
-#define CYL__BI int64_t
-#define CYL__BW 8
-#else
 #define CYL__BK float
 #define CYL__BI int32_t
 #define CYL__BW 16
-#endif
 #include "cylinder_isect_batch.h"
 #endif
 #endif /* CYLINDER_ISECT_BATCH_H */
@@ -108,7 +107,11 @@
 #if defined(CYL__BP) && !defined(CYL__BBODY) /* one API's batch, written once */
 #define CYL__BBODY
 #define CYL__BU ((CYL__BK)(sizeof(CYL__BK) == 8 ? 1.1102230246251565e-16 : 5.9604644775390625e-08)) /* u */
-#define CYL__BLIM ((CYL__BK)(sizeof(CYL__BK) == 8 ? 7.9228162514264338e+28 : 65536.0))        /* 2^96, 2^16 */
+/* The range the filter's bounds hold in, a and d scaled by powers of two to a largest component
+   in [1, 2) (exact; t does not change with a's scale, and scales with d's): |c| and |o| at most
+   P, r within [1/P, P]; no product the bounds form then overflows or underflows. */
+#define CYL__BDERR (sizeof(CYL__BK) == 8 || !CYL_FLOAT_WIDE ? 36 : 20) /* 2 x 18 (16 and the bound's own), 18 + 2 */
+#define CYL__BLIM_P ((CYL__BK)(sizeof(CYL__BK) == 8 ? 1.6069380442589903e+60 : 4294967296.0)) /* 2^200, 2^32 */
 #define CYL__BF 11 /* fields: c (3), a (3), r², |a|², H|a|, |a|, flag */
 
 typedef struct CYL__BN(batch) {
@@ -135,6 +138,25 @@ typedef int CYL__BP(m);
 #define CYL__BSEL(k_, x_, y_) ((k_) ? (x_) : (y_))
 #define CYL__BNOT(k_) (!(k_))
 #define CYL__BFLAG(x_) (!((x_) <= 0))
+#endif
+/* x·y + z: one fused instruction where the build has the FMA (the bounds hold either way). */
+#if CYL__BVEC && defined(__FMA__)
+CYL__ALWAYS CYL__BP(v) CYL__BP(fma)(CYL__BP(v) x, CYL__BP(v) y, CYL__BP(v) z)
+{
+#define CYL__BFM(t, f) { t a_, b_, c_; __builtin_memcpy(&a_, &x, sizeof a_), __builtin_memcpy(&b_, &y, sizeof b_), __builtin_memcpy(&c_, &z, sizeof c_); \
+                         a_ = f(a_, b_, c_); __builtin_memcpy(&x, &a_, sizeof x); return x; }
+#if CYL__BVEC == 64
+    if (sizeof(CYL__BK) == 8) CYL__BFM(__m512d, _mm512_fmadd_pd) else CYL__BFM(__m512, _mm512_fmadd_ps)
+#elif CYL__BVEC == 32
+    if (sizeof(CYL__BK) == 8) CYL__BFM(__m256d, _mm256_fmadd_pd) else CYL__BFM(__m256, _mm256_fmadd_ps)
+#else
+    if (sizeof(CYL__BK) == 8) CYL__BFM(__m128d, _mm_fmadd_pd) else CYL__BFM(__m128, _mm_fmadd_ps)
+#endif
+#undef CYL__BFM
+}
+#define CYL__BFMA(x_, y_, z_) CYL__BP(fma)(x_, y_, z_)
+#else
+#define CYL__BFMA(x_, y_, z_) ((x_) * (y_) + (z_))
 #endif
 #define CYL__BABS(x_) CYL__BSEL((x_) < 0, -(x_), (x_))
 #define CYL__BMAX(x_, y_) CYL__BSEL((x_) > (y_), (x_), (y_))
@@ -185,7 +207,7 @@ CYL__ALWAYS unsigned CYL__BP(bits)(const CYL__BP(m) *mp)
 }
 
 /* The ray in the filter's type, once per query. */
-typedef struct CYL__BP(q) { CYL__BK o[3], d[3], nd, tmin, tmax; } CYL__BP(q);
+typedef struct CYL__BP(q) { CYL__BK o[3], d[3], nd, dd, tmin, tmax; int kd; } CYL__BP(q);
 
 /* The filter (the contract's "how"): of lanes p[j], those a scalar call might hit at a t in
    [tmin, min(tmax, best)]. Every test rejects only where certain; a NaN anywhere rejects nothing.
@@ -194,43 +216,62 @@ typedef struct CYL__BP(q) { CYL__BK o[3], d[3], nd, tmin, tmax; } CYL__BP(q);
    roots tc ± √(|a|²D)/A, each within twice N9's root bound (where first order, else unbounded)
    plus their formula's rounding. The slab: the axial coordinate z0 + tζ at both ends of that
    interval on one side of the cap planes, by more than twice N9's bound at the farther end. */
+/* What the filter forms first, from the block's lanes at p and the ray. */
+typedef struct CYL__BP(tube) { CYL__BP(v) a[3], w[3], s[3], A, P, S, ad, D; } CYL__BP(tube);
+CYL__ALWAYS void CYL__BP(tube_of)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BP(tube) *f)
+{
+    const CYL__BP(v) zero = {0}, r2 = CYL__BLOAD(p + 6 * CYL__BW);
+    int i;
+    for (i = 0; i < 3; i++) f->a[i] = CYL__BLOAD(p + (3 + i) * CYL__BW), f->w[i] = q->o[i] - CYL__BLOAD(p + i * CYL__BW);
+    f->s[0] = CYL__BFMA(f->a[1], zero + q->d[2], -(f->a[2] * q->d[1])), f->s[1] = CYL__BFMA(f->a[2], zero + q->d[0], -(f->a[0] * q->d[2]));
+    f->s[2] = CYL__BFMA(f->a[0], zero + q->d[1], -(f->a[1] * q->d[0]));
+    f->A = CYL__BFMA(f->s[0], f->s[0], CYL__BFMA(f->s[1], f->s[1], f->s[2] * f->s[2]));
+    f->P = CYL__BFMA(f->w[0], f->s[0], CYL__BFMA(f->w[1], f->s[1], f->w[2] * f->s[2]));
+    f->S = CYL__BFMA(f->w[0], f->w[0], CYL__BFMA(f->w[1], f->w[1], f->w[2] * f->w[2])) + r2; /* |w|² + r² */
+    f->ad = CYL__BLOAD(p + 7 * CYL__BW) * q->dd, f->D = CYL__BFMA(r2, f->A, -(f->P * f->P));
+}
+
 CYL__ALWAYS void CYL__BP(filter)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BK best, CYL__BP(m) *out)
 {
     const CYL__BK u = CYL__BU, k0 = 128 * CYL__BU;
-    const CYL__BK *c = p, *a = p + 3 * CYL__BW, *r2 = p + 6 * CYL__BW, *aa = p + 7 * CYL__BW;
-    const CYL__BK *Ha = p + 8 * CYL__BW, *na = p + 9 * CYL__BW, *fl = p + 10 * CYL__BW;
     const CYL__BP(v) zero = {0};
-    CYL__BP(v) w0, w1, w2, a0, a1, a2, s0, s1, s2, m0, m1, m2, A, B, P, z0, ze, ww, D, ad, S, tc, h, T, er, lo, hi, e, zl, zh;
-    const CYL__BP(m) out_of_range = CYL__BFLAG(CYL__BLOAD(fl)); /* always asked */
-    CYL__BP(m) keep;
-    a0 = CYL__BLOAD(a), a1 = CYL__BLOAD(a + CYL__BW), a2 = CYL__BLOAD(a + 2 * CYL__BW);
-    w0 = q->o[0] - CYL__BLOAD(c), w1 = q->o[1] - CYL__BLOAD(c + CYL__BW), w2 = q->o[2] - CYL__BLOAD(c + 2 * CYL__BW);
-    s0 = a1 * q->d[2] - a2 * q->d[1], s1 = a2 * q->d[0] - a0 * q->d[2], s2 = a0 * q->d[1] - a1 * q->d[0];
-    m0 = a1 * w2 - a2 * w1, m1 = a2 * w0 - a0 * w2, m2 = a0 * w1 - a1 * w0;
-    A = s0 * s0 + s1 * s1 + s2 * s2, B = m0 * s0 + m1 * s1 + m2 * s2, P = w0 * s0 + w1 * s1 + w2 * s2;
-    z0 = a0 * w0 + a1 * w1 + a2 * w2, ze = a0 * q->d[0] + a1 * q->d[1] + a2 * q->d[2];
-    ww = w0 * w0 + w1 * w1 + w2 * w2, ad = A + ze * ze, S = ww + CYL__BLOAD(r2);
-    D = CYL__BLOAD(r2) * A - P * P;
-    /* the tube: kept unless D is below the band by twice its bound */
-    keep = CYL__BNOT(D + (CYL__BK)CYL__BTANG * CYL__BLOAD(r2) * A + k0 * (3 * A + ad) * S < 0); /* 2kSA/|a|²: kA <= 64u(3A + |a|²|d|²) */
-    *out = keep | out_of_range;
-    if (!CYL__BP(bits)(out)) return;
+    CYL__BP(tube) f;
+    CYL__BP(v) B, z0, ze, tc, h, T, er, lo, hi, e, zl, zh, aa, Ha, na;
+    CYL__BP(m) keep, out_of_range;
+    CYL__BP(tube_of)(p, q, &f);
+    /* the tube: kept unless D is below the band by more than its rounding and the scalar call's
+       (each at most 16u|a|²|d|²(|w|² + r²), the standard model through s, w, A, P and r², less
+       where the call works in double: CYL__BDERR) */
+    keep = CYL__BNOT(f.D + (CYL__BK)CYL__BTANG * CYL__BLOAD(p + 6 * CYL__BW) * f.A + (CYL__BK)CYL__BDERR * u * f.ad * f.S < 0);
+    *out = keep | (out_of_range = CYL__BFLAG(CYL__BLOAD(p + 10 * CYL__BW))); /* out of range: always asked */
+    if (!CYL__BP(bits)(out)) return; /* the usual block: no more */
+    aa = CYL__BLOAD(p + 7 * CYL__BW), Ha = CYL__BLOAD(p + 8 * CYL__BW), na = CYL__BLOAD(p + 9 * CYL__BW);
+    B = CYL__BFMA(f.a[1] * f.w[2] - f.a[2] * f.w[1], f.s[0], CYL__BFMA(f.a[2] * f.w[0] - f.a[0] * f.w[2], f.s[1],
+                  (f.a[0] * f.w[1] - f.a[1] * f.w[0]) * f.s[2])); /* m·s, m = a × w */
+    z0 = f.a[0] * f.w[0] + f.a[1] * f.w[1] + f.a[2] * f.w[2], ze = f.a[0] * q->d[0] + f.a[1] * q->d[1] + f.a[2] * q->d[2];
     /* its t interval [tc − h − er, tc + h + er] (er: N9's root bound, twice, where first order) */
-    e = 1 / A, tc = -B * e, h = CYL__BMAX(D, zero) * CYL__BLOAD(aa);
+    e = 1 / f.A, tc = -B * e, h = CYL__BMAX(f.D, zero) * aa;
     CYL__BP(sqrt)(&h), h *= e;
     T = CYL__BABS(tc) + h;
-    er = 2 * (k0 * ((CYL__BK)1.5 + (CYL__BK)0.5 * ad * e) * (CYL__BLOAD(aa) * S + T * T * ad) / (h * A) + 4 * u * T) + 4 * u * T;
-    er = CYL__BSEL(er * A <= (CYL__BK)0.5 * (h * A), er, zero + (CYL__BK)CYL__HUGE);
+    er = 2 * (k0 * ((CYL__BK)1.5 + (CYL__BK)0.5 * f.ad * e) * (aa * f.S + T * T * f.ad) / (h * f.A) + 4 * u * T) + 4 * u * T;
+    er = CYL__BSEL(er * f.A <= (CYL__BK)0.5 * (h * f.A), er, zero + (CYL__BK)CYL__HUGE);
     lo = CYL__BMAX(tc - h - er, zero + q->tmin);
     hi = CYL__BMIN(tc + h + er, zero + (best < q->tmax ? best : q->tmax));
     keep &= CYL__BNOT(lo > hi);
     /* the slab: z0 + tζ at lo and hi, beyond one cap plane by more than twice N9's bound */
     T = CYL__BMAX(CYL__BABS(lo), CYL__BABS(hi));
-    e = 2 * (64 * u * (CYL__BLOAD(na) * (CYL__BABS(w0) + CYL__BABS(w1) + CYL__BABS(w2)) + CYL__BLOAD(Ha)
-                       + T * CYL__BLOAD(na) * q->nd) + 2 * u * T * CYL__BABS(ze)) + CYL__BLOAD(Ha);
+    e = 2 * (64 * u * (na * (CYL__BABS(f.w[0]) + CYL__BABS(f.w[1]) + CYL__BABS(f.w[2])) + Ha + T * na * q->nd)
+             + 2 * u * T * CYL__BABS(ze)) + Ha;
     zl = z0 + lo * ze, zh = z0 + hi * ze;
     keep &= CYL__BNOT(((zl > e) & (zh > e)) | ((zl < -e) & (zh < -e)));
     *out = keep | out_of_range;
+}
+
+/* t·2^k (t in the units of the scaled d) where that is exact, else the side's infinity. */
+CYL__ALWAYS CYL__BK CYL__BP(tscale)(CYL__BK t, int k, CYL__BK inf)
+{
+    CYL__BK y = CYL__BS(scale)(t, k), z = CYL__BS(scale)(y, -k);
+    return !(z < t) && !(z > t) ? y : inf;
 }
 
 /* The ray in the filter's type; 0 where the filter's bounds could overflow (then every cylinder is asked). */
@@ -239,27 +280,29 @@ CYL__ALWAYS int CYL__BP(query)(CYL__BP(q) *q, const CYL__BN(ray) *ray)
     CYL__BK om = 0, dm = 0, x;
     int i;
     for (i = 0; i < 3; i++) {
-        q->o[i] = (CYL__BK)ray->o[i], q->d[i] = (CYL__BK)ray->d[i];
+        q->o[i] = ray->o[i];
         x = q->o[i] < 0 ? -q->o[i] : q->o[i], om = x > om ? x : om;
-        x = q->d[i] < 0 ? -q->d[i] : q->d[i], dm = x > dm ? x : dm;
+        x = ray->d[i] < 0 ? -ray->d[i] : ray->d[i], dm = x > dm ? x : dm;
     }
+    q->kd = CYL__BS(expo)(dm); /* d nonzero (validated, or CYL_TRUSTED's promise) */
+    for (i = 0; i < 3; i++) q->d[i] = CYL__BS(scale)(ray->d[i], -q->kd);
     x = q->d[0] * q->d[0] + q->d[1] * q->d[1] + q->d[2] * q->d[2];
-    q->nd = (sizeof(CYL__BK) == 8 ? (CYL__BK)CYL_SQRT((double)x) : (CYL__BK)CYL_SQRTF((float)x)) * (1 + 4 * CYL__BU);
-    q->tmin = (CYL__BK)ray->tmin, q->tmax = (CYL__BK)ray->tmax;
-    return om <= CYL__BLIM && dm <= CYL__BLIM && dm >= 1 / CYL__BLIM;
+    q->nd = (sizeof(CYL__BK) == 8 ? (CYL__BK)CYL_SQRT((double)x) : (CYL__BK)CYL_SQRTF((float)x)) * (1 + 4 * CYL__BU), q->dd = x;
+    q->tmin = CYL__BP(tscale)(ray->tmin, q->kd, -(CYL__BK)CYL__HUGE), q->tmax = CYL__BP(tscale)(ray->tmax, q->kd, (CYL__BK)CYL__HUGE);
+    return om <= CYL__BLIM_P;
 }
 
-/* The candidates of block k (bit j: cylinder k·BW + j), all of them where the ray is out of range. */
-CYL__ALWAYS unsigned CYL__BP(block)(const CYL__BN(batch) *b, size_t k, const CYL__BP(q) *q, int inrange, CYL__BK best)
+/* The candidates of a block at p with `left` cylinders from it on (bit j: its j-th), all of them where
+   the ray is out of range; block_of: block k of b. */
+CYL__ALWAYS unsigned CYL__BP(block)(const CYL__BK *p, size_t left, const CYL__BP(q) *q, int inrange, CYL__BK best)
 {
-    const CYL__BK *p = b->blocks + k * (CYL__BF * CYL__BW);
-    unsigned m = (2u << (CYL__BW - 1)) - 1u;
-    size_t left = b->n - k * CYL__BW;
+    unsigned m = (2u << (CYL__BW - 1)) - 1u, j;
     CYL__BP(m) keep;
-    unsigned j;
     if (inrange) for (m = 0u, j = 0; j < CYL__BW; j += CYL__BL) CYL__BP(filter)(p + j, q, best, &keep), m |= CYL__BP(bits)(&keep) << j;
     return left < CYL__BW ? m & ((1u << left) - 1u) : m; /* the padding lanes are no cylinders */
 }
+CYL__ALWAYS unsigned CYL__BP(block_of)(const CYL__BN(batch) *b, size_t k, const CYL__BP(q) *q, int inrange, CYL__BK best)
+{ return CYL__BP(block)(b->blocks + k * (CYL__BF * CYL__BW), b->n - k * CYL__BW, q, inrange, best); }
 
 /* The lowest set bit's index (m nonzero). */
 CYL__ALWAYS int CYL__BP(ctz)(unsigned m)
@@ -296,16 +339,18 @@ CYL_DEF int CYL__BN(batch_build)(CYL__BN(batch) *b, void *mem, const CYL__BN(cyl
     copy = (CYL__BN(cylinder) *)(void *)(blocks + nb * (CYL__BF * CYL__BW));
     for (i = 0; i < nb * CYL__BW; i++) { /* the padding lanes repeat the last cylinder */
         const CYL__BN(cylinder) *cy = &cyls[i < n ? i : n - 1];
-        CYL__BK H = (CYL__BK)cy->h * (CYL__BK)0.5, r = (CYL__BK)cy->r, lim = CYL__BLIM, sa;
+        CYL__BK H = (CYL__BK)cy->h * (CYL__BK)0.5, r = (CYL__BK)cy->r, sa;
+        int in = r >= 1 / CYL__BLIM_P && r <= CYL__BLIM_P, ka;
         for (m = 0, k = 0; k < 3; k++) {
-            v[k] = (CYL__BK)cy->c[k], v[3 + k] = (CYL__BK)cy->a[k];
-            if (v[k] > lim || v[k] < -lim) m = lim * 2; /* c out of range */
+            v[k] = cy->c[k], v[3 + k] = cy->a[k];
+            in &= v[k] <= CYL__BLIM_P && v[k] >= -CYL__BLIM_P;
             m = v[3 + k] > m ? v[3 + k] : -v[3 + k] > m ? -v[3 + k] : m;
         }
+        for (ka = CYL__BS(expo)(m), k = 0; k < 3; k++) v[3 + k] = CYL__BS(scale)(v[3 + k], -ka); /* largest in [1, 2) */
         v[6] = r * r, v[7] = v[3] * v[3] + v[4] * v[4] + v[5] * v[5];
         sa = sizeof(CYL__BK) == 8 ? (CYL__BK)CYL_SQRT((double)v[7]) : (CYL__BK)CYL_SQRTF((float)v[7]);
         v[8] = H * sa, v[9] = sa * (1 + 4 * CYL__BU);
-        CYL__B(memset)(&v[10], m <= lim && m >= 1 / lim && r <= lim && r >= 1 / lim ? 0 : 0xff, sizeof v[10]); /* NaN: asked */
+        CYL__B(memset)(&v[10], in ? 0 : 0xff, sizeof v[10]); /* NaN: always asked */
         for (f = 0; f < CYL__BF; f++) blocks[(i / CYL__BW) * (CYL__BF * CYL__BW) + (size_t)f * CYL__BW + i % CYL__BW] = v[f];
     }
     for (i = 0; i < n; i++) copy[i] = cyls[i];
@@ -313,23 +358,38 @@ CYL_DEF int CYL__BN(batch_build)(CYL__BN(batch) *b, void *mem, const CYL__BN(cyl
     return 0;
 }
 
+/* The scalar call a candidate takes, out of line: the filter's loop keeps its registers (and
+   gcc still folds constant options into it when every call site passes the same). */
+CYL__OUT int CYL__BP(ask)(const CYL__BN(ray) *ray, const CYL__BN(cylinder) *cyl, unsigned opts, CYL__BR *t)
+{
+    CYL__BN(hit) hit;
+    int rc = CYL__BN(intersect)(ray, cyl, opts, &hit);
+    if (rc == CYL_HIT) *t = hit.t;
+    return rc;
+}
+CYL__OUT int CYL__BP(ask_any)(const CYL__BN(ray) *ray, const CYL__BN(cylinder) *cyl, unsigned opts)
+{ return CYL__BN(occluded)(ray, cyl, opts); }
+
 CYL_DEF int CYL__BN(batch_nearest)(const CYL__BN(batch) *b, const CYL__BN(ray) *ray, unsigned opts, size_t *index, CYL__BR *t)
 {
     static const CYL__BN(cylinder) unit = {{0, 0, 0}, {0, 0, 1}, 1, 1};
     CYL__BP(q) q;
-    CYL__BN(hit) hit;
-    CYL__BR bt = 0;
+    CYL__BR bt = 0, ti = 0;
     size_t k, i, found = 0;
     int rc, got = 0, inrange;
+    CYL__BK bk;
     unsigned m;
     if (!b || !ray || !index || !t) return CYL_E_NULL;
+    const CYL__BK *const blocks = b->blocks; /* in registers across the scalar calls */
+    const CYL__BN(cylinder) *const cyls = b->cyls;
+    const size_t n = b->n, nb = b->nb;
     if ((rc = CYL__BS(validate)(ray, &unit, opts)) != 0) return rc;
-    inrange = CYL__BP(query)(&q, ray);
-    for (k = 0; k < b->nb; k++)
-        for (m = CYL__BP(block)(b, k, &q, inrange, got ? (CYL__BK)bt : q.tmax); m; m &= m - 1u) {
+    inrange = CYL__BP(query)(&q, ray), bk = q.tmax;
+    for (k = 0; k < nb; k++)
+        for (m = CYL__BP(block)(blocks + k * (CYL__BF * CYL__BW), n - k * CYL__BW, &q, inrange, bk); m; m &= m - 1u) {
             i = k * CYL__BW + (size_t)CYL__BP(ctz)(m);
-            if (CYL__BN(intersect)(ray, &b->cyls[i], opts, &hit) == CYL_HIT && (!got || hit.t < bt))
-                bt = hit.t, found = i, got = 1;
+            if (CYL__BP(ask)(ray, &cyls[i], opts, &ti) == CYL_HIT && (!got || ti < bt))
+                bt = ti, found = i, got = 1, bk = CYL__BP(tscale)(bt, q.kd, (CYL__BK)CYL__HUGE);
         }
     if (got) *index = found, *t = bt;
     return got;
@@ -346,8 +406,8 @@ CYL_DEF int CYL__BN(batch_any)(const CYL__BN(batch) *b, const CYL__BN(ray) *ray,
     if ((rc = CYL__BS(validate)(ray, &unit, opts)) != 0) return rc;
     inrange = CYL__BP(query)(&q, ray);
     for (k = 0; k < b->nb; k++)
-        for (m = CYL__BP(block)(b, k, &q, inrange, q.tmax); m; m &= m - 1u)
-            if (CYL__BN(occluded)(ray, &b->cyls[k * CYL__BW + (size_t)CYL__BP(ctz)(m)], opts) == 1) return 1;
+        for (m = CYL__BP(block_of)(b, k, &q, inrange, q.tmax); m; m &= m - 1u)
+            if (CYL__BP(ask_any)(ray, &b->cyls[k * CYL__BW + (size_t)CYL__BP(ctz)(m)], opts) == 1) return 1;
     return 0;
 }
 
@@ -359,7 +419,8 @@ CYL_DEF int CYL__BN(batch_any)(const CYL__BN(batch) *b, const CYL__BN(ray) *ray,
 #undef CYL__BI
 #undef CYL__BW
 #undef CYL__BU
-#undef CYL__BLIM
+#undef CYL__BLIM_P
+#undef CYL__BDERR
 #undef CYL__BF
 #undef CYL__BL
 #undef CYL__BLOAD
@@ -367,6 +428,7 @@ CYL_DEF int CYL__BN(batch_any)(const CYL__BN(batch) *b, const CYL__BN(ray) *ray,
 #undef CYL__BNOT
 #undef CYL__BFLAG
 #undef CYL__BABS
+#undef CYL__BFMA
 #undef CYL__BMAX
 #undef CYL__BMIN
 #undef CYL__BTANG

@@ -272,6 +272,8 @@ static void test_out_of_range_inputs_agree(void)
         CYL(ray) ray = ray_for(cy, N, 10, CYL_CAPS);
         if (r % 3 == 0) for (k = 0; k < 3; k++) ray.o[k] *= T_HUGE / 100; /* the ray out of range */
         if (r % 5 == 0) ray.d[0] *= (T)1e-30, ray.d[1] *= (T)1e-30, ray.d[2] *= (T)1e-30;
+        if (r % 7 == 0) ray.d[0] *= (T)3e6, ray.d[1] *= (T)3e6, ray.d[2] *= (T)3e6; /* t in units of a long d */
+        if (r % 11 == 0) ray.tmin = (T)1e-38, ray.tmax = (T)3e-38; /* tmin, tmax scaled with d: beyond float's range */
         agree(&b, &ray, cy, N, CYL_CAPS);
         agree(&b, &ray, cy, N, 0u);
     }
@@ -323,11 +325,11 @@ static void test_the_filter_drops_certain_misses(void)
 #ifdef T_DOUBLE
         TEST_ASSERT_TRUE(cyl__db_query(&q, &ray));
         for (k = 0; k < b.nb; k++) {
-            unsigned m = cyl__db_block(&b, k, &q, 1, q.tmax);
+            unsigned m = cyl__db_block_of(&b, k, &q, 1, q.tmax);
 #else
         TEST_ASSERT_TRUE(cyl__fb_query(&q, &ray));
         for (k = 0; k < b.nb; k++) {
-            unsigned m = cyl__fb_block(&b, k, &q, 1, q.tmax);
+            unsigned m = cyl__fb_block_of(&b, k, &q, 1, q.tmax);
 #endif
             for (; m; m &= m - 1u) asked++;
         }
