@@ -16,8 +16,9 @@ $(README_DIR)/test_readme: tests/readme/test_readme.c $(README_DIR)/snippet.inc 
 RUNNERS += $(README_DIR)/test_readme
 
 # The accuracy-and-cost table is written into docs/accuracy.md by `make report` (bench/report.py)
-# and copied into README.md between the same `headline` markers.
-README_SYNC := headline=docs/accuracy.md
+# and copied into README.md between the same `headline` markers; the batch's, into docs/batch.md by
+# `make bench-batch`, between `batch` markers.
+README_SYNC := headline=docs/accuracy.md batch=docs/batch.md
 .PHONY: readme
 readme:
 	$(PYTHON) scripts/sync-readme.py README.md $(README_SYNC)
