@@ -41,14 +41,14 @@
 
    The filter works in the API's own type (the float API's in float, whose bounds are wider
    than the scalar call's double: more cylinders asked, twice the lanes per instruction).
-   Outside its range every cylinder is asked: a ray whose |o| exceeds 2^96 (float: 2^24), or
-   whose largest component of d lies outside 2^±96 (2^-12 .. 2^12); a cylinder likewise for
-   |c|, for a (2^-12 .. 2^16) and r (2^±24).
+   Outside its range every cylinder is asked: a ray whose largest |o| component exceeds 2^200
+   (float: 2^32); a cylinder likewise for c, or whose r lies outside 2^±200 (2^±32). a and d
+   may have any length (the filter scales them by powers of two).
 
    LAYOUT (in mem, 64-byte aligned): blocks of 8 cylinders in double, 16 in float, structure of
-   arrays, each field of a block one 64-byte line: the center and axis (c, a), r², |a|²,
-   (h/2)|a|, |a| rounded up, and a flag (all bits set: outside the range); the last block
-   padded; then the cylinders as given.
+   arrays, each field of a block one 64-byte line: the center c, the axis a scaled to a largest
+   component in [1, 2), r² (+inf outside the range), |a|², (h/2)|a|, |a| rounded up; the last
+   block padded; then the cylinders as given.
 
    CODE: the filter is written once over a vector: GCC vector extensions where the compiler has
    them (gcc, clang) at the width of the instruction set the build targets (SSE2, AVX2, AVX-512,
@@ -112,7 +112,7 @@
    P, r within [1/P, P]; no product the bounds form then overflows or underflows. */
 #define CYL__BDERR (sizeof(CYL__BK) == 8 || !CYL_FLOAT_WIDE ? 36 : 20) /* 2 x 18 (16 and the bound's own), 18 + 2 */
 #define CYL__BLIM_P ((CYL__BK)(sizeof(CYL__BK) == 8 ? 1.6069380442589903e+60 : 4294967296.0)) /* 2^200, 2^32 */
-#define CYL__BF 11 /* fields: c (3), a (3), r², |a|², H|a|, |a|, flag */
+#define CYL__BF 10 /* fields: c (3), a (3), r² (+inf: always asked), |a|², H|a|, |a| */
 
 typedef struct CYL__BN(batch) {
     const CYL__BK *blocks;          /* nb blocks of CYL__BF fields of CYL__BW lanes */
@@ -135,7 +135,6 @@ typedef CYL__BI CYL__BP(m) __attribute__((vector_size(CYL__BVEC)));
 #define CYL__BLOAD(p) (*(const CYL__BP(v) *)(const void *)(p))
 #define CYL__BSEL(k_, x_, y_) ((CYL__BP(v))(((k_) & (CYL__BP(m))(x_)) | (~(k_) & (CYL__BP(m))(y_))))
 #define CYL__BNOT(k_) (~(k_))
-#define CYL__BFLAG(x_) ((CYL__BP(m))(x_)) /* the flag's bits: 0, or all ones */
 #else
 typedef CYL__BK CYL__BP(v);
 typedef int CYL__BP(m);
@@ -143,7 +142,6 @@ typedef int CYL__BP(m);
 #define CYL__BLOAD(p) (*(p))
 #define CYL__BSEL(k_, x_, y_) ((k_) ? (x_) : (y_))
 #define CYL__BNOT(k_) (!(k_))
-#define CYL__BFLAG(x_) (!((x_) <= 0))
 #endif
 /* x·y + z: one fused instruction where the build has the FMA (the bounds hold either way). */
 #if CYL__BVEC && defined(__FMA__)
@@ -244,13 +242,13 @@ CYL__ALWAYS void CYL__BP(filter)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BK 
     const CYL__BP(v) zero = {0};
     CYL__BP(tube) f;
     CYL__BP(v) B, z0, ze, tc, h, T, er, lo, hi, e, zl, zh, aa, Ha, na;
-    CYL__BP(m) keep, out_of_range;
+    CYL__BP(m) keep;
     CYL__BP(tube_of)(p, q, &f);
     /* the tube: kept unless D is below the band by more than its rounding and the scalar call's
        (each at most 16u|a|²|d|²(|w|² + r²), the standard model through s, w, A, P and r², less
        where the call works in double: CYL__BDERR) */
     keep = CYL__BNOT(f.D + (CYL__BK)CYL__BTANG * CYL__BLOAD(p + 6 * CYL__BW) * f.A + (CYL__BK)CYL__BDERR * u * f.ad * f.S < 0);
-    *out = keep | (out_of_range = CYL__BFLAG(CYL__BLOAD(p + 10 * CYL__BW))); /* out of range: always asked */
+    *out = keep; /* r² = +inf (a cylinder out of range) keeps its lane: D, S and the bounds infinite or NaN */
     if (!CYL__BP(bits)(out)) return; /* the usual block: no more */
     aa = CYL__BLOAD(p + 7 * CYL__BW), Ha = CYL__BLOAD(p + 8 * CYL__BW), na = CYL__BLOAD(p + 9 * CYL__BW);
     B = CYL__BFMA(f.a[1] * f.w[2] - f.a[2] * f.w[1], f.s[0], CYL__BFMA(f.a[2] * f.w[0] - f.a[0] * f.w[2], f.s[1],
@@ -271,7 +269,7 @@ CYL__ALWAYS void CYL__BP(filter)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BK 
              + 2 * u * T * CYL__BABS(ze)) + Ha;
     zl = z0 + lo * ze, zh = z0 + hi * ze;
     keep &= CYL__BNOT(((zl > e) & (zh > e)) | ((zl < -e) & (zh < -e)));
-    *out = keep | out_of_range;
+    *out = keep;
 }
 
 /* t·2^k (t in the units of the scaled d) where that is exact, else the side's infinity. */
@@ -357,7 +355,7 @@ CYL_DEF int CYL__BN(batch_build)(CYL__BN(batch) *b, void *mem, const CYL__BN(cyl
         v[6] = r * r, v[7] = v[3] * v[3] + v[4] * v[4] + v[5] * v[5];
         sa = sizeof(CYL__BK) == 8 ? (CYL__BK)CYL_SQRT((double)v[7]) : (CYL__BK)CYL_SQRTF((float)v[7]);
         v[8] = H * sa, v[9] = sa * (1 + 4 * CYL__BU);
-        CYL__B(memset)(&v[10], in ? 0 : 0xff, sizeof v[10]); /* NaN: always asked */
+        if (!in) v[6] = (CYL__BK)CYL__HUGE; /* r² infinite: always asked */
         for (f = 0; f < CYL__BF; f++) blocks[(i / CYL__BW) * (CYL__BF * CYL__BW) + (size_t)f * CYL__BW + i % CYL__BW] = v[f];
     }
     for (i = 0; i < n; i++) copy[i] = cyls[i];
@@ -433,7 +431,6 @@ CYL_DEF int CYL__BN(batch_any)(const CYL__BN(batch) *b, const CYL__BN(ray) *ray,
 #undef CYL__BLOAD
 #undef CYL__BSEL
 #undef CYL__BNOT
-#undef CYL__BFLAG
 #undef CYL__BUNROLL
 #undef CYL__BABS
 #undef CYL__BFMA

@@ -23,11 +23,13 @@
 #define CYL(x) cyld_##x
 #define T_HUGE 1e200 /* beyond the filter's range (2^96): such cylinders are always asked */
 #define TANG_TOL CYL_TANGENT_TOL
+#define T_TINY_R 1e-250 /* r below the filter's range (2^-200) */
 #else
 #define T float
 #define CYL(x) cylf_##x
 #define T_HUGE 1e30f
 #define TANG_TOL (double)CYL_TANGENT_TOLF
+#define T_TINY_R 1e-20f /* r below the filter's range (2^-32) */
 #endif
 
 void setUp(void) {}
@@ -301,6 +303,29 @@ static void test_fuzz_block_of_out_of_range_cylinders(void)
 }
 #endif
 
+/* A cylinder outside the filter's range (here r below 2^-200, float 2^-32) is always asked, even
+   far from the ray; one inside it, as far, is not (the manual's range). */
+static void test_out_of_range_cylinder_always_asked(void)
+{
+    CYL(cylinder) cy[3] = {{{0, 50, 0}, {0, 0, 1}, 1, 2}, {{0, 50, 0}, {0, 0, 1}, T_TINY_R, 2}, {{0, 0, 0}, {0, 0, 1}, 1, 2}};
+    CYL(ray) ray = {{-5, 0, 0}, {1, 0, 0}, 0, 100};
+    CYL(batch) b;
+    void *mem = build(&b, cy, 3);
+    unsigned m;
+#ifdef T_DOUBLE
+    cyl__db_q q;
+    TEST_ASSERT_TRUE(cyl__db_query(&q, &ray));
+    m = cyl__db_block_of(&b, 0, &q, 1, q.tmax);
+#else
+    cyl__fb_q q;
+    TEST_ASSERT_TRUE(cyl__fb_query(&q, &ray));
+    m = cyl__fb_block_of(&b, 0, &q, 1, q.tmax);
+#endif
+    TEST_ASSERT_EQUAL_HEX(6u, m); /* 1 (out of range) and 2 (hit); not 0 */
+    agree(&b, &ray, cy, 3, CYL_CAPS);
+    free(mem);
+}
+
 /* The filter drops what is certainly missed: in a sparse scene, far from every cylinder
    being asked (else the batch would be the scalar loop with extra steps). */
 static void test_the_filter_drops_certain_misses(void)
@@ -411,6 +436,7 @@ int main(void)
     RUN_TEST(test_ties_and_range_ends);
     RUN_TEST(test_out_of_range_inputs_agree);
     RUN_TEST(test_the_filter_drops_certain_misses);
+    RUN_TEST(test_out_of_range_cylinder_always_asked);
 #ifdef T_DOUBLE
     RUN_TEST(test_fuzz_block_of_out_of_range_cylinders);
 #endif
