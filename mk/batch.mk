@@ -5,7 +5,8 @@
 #                      where this machine has it) and in the batch's portable form
 #   make bench-batch   ns per test of the batch against the scalar loop, float and double, N = 1024,
 #                      4096, 65536 and 2^20, for each form this machine runs: -O2 (SSE2), the
-#                      portable form, x86-64-v3 (AVX2), x86-64-v4 (AVX-512); the median of
+#                      portable form, x86-64-v3 (AVX2), x86-64-v4 (AVX-512, with 256-bit vectors,
+#                      the default, and 512-bit ones); the median of
 #                      BENCH_BATCH_RUNS timings, in one run (build/bench-batch/bench-batch.md), and
 #                      issue 31's limits at N = 4096 met or not; docs/batch.md gets the N = 4096
 #                      rows, which `make readme` copies into README.md
@@ -32,6 +33,7 @@ $(eval $(call BATCH_RUNNER,clang-O2,batch_avx2,-march=x86-64-v3))
 endif
 ifeq ($(HOST_AVX512),1)
 $(eval $(call BATCH_RUNNER,gcc-O2,batch_avx512,-march=x86-64-v4))
+$(eval $(call BATCH_RUNNER,gcc-O2,batch_avx512_zmm,-march=x86-64-v4 -DCYL_BATCH_VECTOR_BYTES=64))
 endif
 endif
 
@@ -39,11 +41,12 @@ endif
 BENCH_BATCH_DIR   := build/bench-batch
 BENCH_BATCH_RUNS  ?= 5
 BENCH_BATCH_TESTS ?= 4e6
-BENCH_BATCH_KEYS  := sse2 portable $(if $(filter x86_64,$(shell uname -m)),avx2) $(if $(HOST_AVX512),avx512)
+BENCH_BATCH_KEYS  := sse2 portable $(if $(filter x86_64,$(shell uname -m)),avx2) $(if $(HOST_AVX512),avx512 avx512zmm)
 BENCH_BATCH_FLAGS_sse2     := -O2
 BENCH_BATCH_FLAGS_portable := -O2 -DCYL_BATCH_PORTABLE
 BENCH_BATCH_FLAGS_avx2     := -O2 -march=x86-64-v3
 BENCH_BATCH_FLAGS_avx512   := -O2 -march=x86-64-v4
+BENCH_BATCH_FLAGS_avx512zmm := -O2 -march=x86-64-v4 -DCYL_BATCH_VECTOR_BYTES=64
 $(BENCH_BATCH_DIR)/batch-%: bench/batch.c $(BATCH_HDRS)
 	@mkdir -p $(@D)
 	$(GCC_ALONE) $(WARN_C) $(BENCH_BATCH_FLAGS_$*) -iquote $(abspath v2) $< -lm -o $@

@@ -51,18 +51,21 @@
    block padded; then the cylinders as given.
 
    CODE: the filter is written once over a vector: GCC vector extensions where the compiler has
-   them (gcc, clang) at the width of the instruction set the build targets (SSE2, AVX2, AVX-512,
-   NEON; square roots, fused multiply-adds and masks by its intrinsics), else, or with
-   CYL_BATCH_PORTABLE, the same text over one lane. `make bench-batch` measures each form.
+   them (gcc, clang) at the width of the instruction set the build targets (SSE2, AVX2, NEON;
+   with AVX-512, 256 bits and its 32 registers unless CYL_BATCH_VECTOR_BYTES is 64; square
+   roots, fused multiply-adds and masks by its intrinsics), else, or with CYL_BATCH_PORTABLE,
+   the same text over one lane. `make bench-batch` measures each form.
 */
 #ifndef CYLINDER_ISECT_BATCH_H
 #define CYLINDER_ISECT_BATCH_H
 #include "cylinder_isect.h"
 
-/* CYL__BVEC: the bytes of the instruction set's vector (the filter's), 0 for the portable form. */
+/* CYL__BVEC: the bytes of the filter's vector, 0 for the portable form. With AVX-512, 32 unless
+   CYL_BATCH_VECTOR_BYTES is 64: 256-bit vectors with AVX-512's 32 registers measured faster here
+   (make bench-batch's avx512 rows; gcc's own default width for x86-64-v4 too). */
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(CYL_BATCH_PORTABLE) && \
     (defined(__SSE2__) || (defined(__aarch64__) && defined(__ARM_NEON)))
-#if defined(__AVX512F__)
+#if defined(__AVX512F__) && defined(CYL_BATCH_VECTOR_BYTES) && CYL_BATCH_VECTOR_BYTES == 64
 #define CYL__BVEC 64
 #elif defined(__AVX__)
 #define CYL__BVEC 32
