@@ -110,11 +110,18 @@
 #if defined(CYL__BP) && !defined(CYL__BBODY) /* one API's batch, written once */
 #define CYL__BBODY
 #define CYL__BU ((CYL__BK)(sizeof(CYL__BK) == 8 ? 1.1102230246251565e-16 : 5.9604644775390625e-08)) /* u */
-/* The range the filter's bounds hold in, a and d scaled by powers of two to a largest component
-   in [1, 2) (exact; t does not change with a's scale, and scales with d's): |c| and |o| at most
-   P, r within [1/P, P]; no product the bounds form then overflows or underflows. */
+/* The range the filter holds in: its bounds neither overflow nor underflow (a and d scaled by
+   powers of two to a largest component in [1, 2): exact; t does not change with a's scale and
+   scales with d's), and the scalar call answers within them (its exact path raises r or h/2
+   only for r below 2^-300 |o − c| or h/2 below 2^-600 |o − c| in double, 2^-38 and 2^-76 in
+   float; clamps h/2 only above 2^1021 times those): |c| and |o| at most P, r within [1/P, P],
+   h/2 within [1/H, H] or infinite. Double: P = 2^100, H = 2^400; the float API computed in
+   double: 2^32 (its bounds) and any h; computed in float: 2^16, r from 2^-20, h/2 2^±58. */
 #define CYL__BDERR (sizeof(CYL__BK) == 8 || !CYL_FLOAT_WIDE ? 36 : 20) /* 2 x 18 (16 and the bound's own), 18 + 2 */
-#define CYL__BLIM_P ((CYL__BK)(sizeof(CYL__BK) == 8 ? 1.6069380442589903e+60 : 4294967296.0)) /* 2^200, 2^32 */
+#define CYL__BLIM(d_, w_, f_) ((CYL__BK)(sizeof(CYL__BK) == 8 ? (d_) : CYL_FLOAT_WIDE ? (w_) : (f_)))
+#define CYL__BLIM_P CYL__BLIM(1.2676506002282294e+30, 4294967296.0, 65536.0)
+#define CYL__BLIM_R CYL__BLIM(7.8886090522101181e-31, 2.3283064365386963e-10, 9.5367431640625e-07)
+#define CYL__BLIM_H CYL__BLIM(2.5822498780869086e+120, 3.4028234663852886e+38, 2.8823037615171174e+17)
 #define CYL__BF 10 /* fields: c (3), a (3), r² (+inf: always asked), |a|², H|a|, |a| */
 
 typedef struct CYL__BN(batch) {
@@ -217,13 +224,12 @@ CYL__ALWAYS unsigned CYL__BP(bits)(const CYL__BP(m) *mp)
 typedef struct CYL__BP(q) { CYL__BK o[3], d[3], nd, dd, tmin, tmax; int kd; } CYL__BP(q);
 
 /* The filter (the contract's "how"): of lanes p[j], those a scalar call might hit at a t in
-   [tmin, min(tmax, best)]. Every test rejects only where certain; a NaN anywhere rejects nothing.
-   The tube: D = r²A − P² below the tangent band by more than its rounding and the scalar call's
-   (CYL__BDERR). Its t interval: the roots tc ± √(|a|²D)/A, each within twice N9's root bound
-   (k(S + t²|a|²|d|²)/√(|a|²D) + 4u|t|, k = 128u(1 + |a||d|/|s|) <= 128u(1.5 + |a|²|d|²/(2A)),
-   S = |a|²(|w|² + r²); where first order, else unbounded)
-   plus their formula's rounding. The slab: the axial coordinate z0 + tζ at both ends of that
-   interval on one side of the cap planes, by more than twice N9's bound at the farther end. */
+   [tmin, min(tmax, best)]. Every test rejects only where certain, from bounds on its own
+   rounding and the scalar call's (the standard model, each input exact); a NaN or an infinity
+   rejects nothing. The tube: D = r²A − P² below the tangent band by more than those. Its t
+   interval: tc ± √(|a|²D)/A with D, A and tc = −B/A each moved by their bounds against the
+   interval. The slab: the axial coordinate z0 + tζ at both ends of that interval on one side of
+   the cap planes by more than twice N9's bound at the farther end. */
 /* What the filter forms first, from the block's lanes at p and the ray. */
 typedef struct CYL__BP(tube) { CYL__BP(v) a[3], w[3], s[3], A, P, S, ad, D; } CYL__BP(tube);
 CYL__ALWAYS void CYL__BP(tube_of)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BP(tube) *f)
@@ -241,34 +247,38 @@ CYL__ALWAYS void CYL__BP(tube_of)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BP
 
 CYL__ALWAYS void CYL__BP(filter)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BK best, CYL__BP(m) *out)
 {
-    const CYL__BK u = CYL__BU, k0 = 128 * CYL__BU;
+    const CYL__BK u = CYL__BU;
     const CYL__BP(v) zero = {0};
     CYL__BP(tube) f;
-    CYL__BP(v) B, z0, ze, tc, h, T, er, lo, hi, e, zl, zh, aa, Ha, na;
+    CYL__BP(v) B, z0, ze, tc, h, T, er, lo, hi, e, zl, zh, aa, Ha, na, nw, eD, eA, Am;
     CYL__BP(m) keep;
     CYL__BP(tube_of)(p, q, &f);
     /* the tube: kept unless D is below the band by more than its rounding and the scalar call's
        (each at most 16u|a|²|d|²(|w|² + r²), the standard model through s, w, A, P and r², less
        where the call works in double: CYL__BDERR) */
-    keep = CYL__BNOT(f.D + (CYL__BK)CYL__BTANG * CYL__BLOAD(p + 6 * CYL__BW) * f.A + (CYL__BK)CYL__BDERR * u * f.ad * f.S < 0);
+    eD = f.D + (CYL__BK)CYL__BTANG * CYL__BLOAD(p + 6 * CYL__BW) * f.A + (CYL__BK)CYL__BDERR * u * f.ad * f.S; /* D's most */
+    keep = CYL__BNOT(eD < 0);
     *out = keep; /* r² = +inf (a cylinder out of range) keeps its lane: D, S and the bounds infinite or NaN */
     if (!CYL__BP(bits)(out)) return; /* the usual block: no more */
     aa = CYL__BLOAD(p + 7 * CYL__BW), Ha = CYL__BLOAD(p + 8 * CYL__BW), na = CYL__BLOAD(p + 9 * CYL__BW);
     B = CYL__BFMA(f.a[1] * f.w[2] - f.a[2] * f.w[1], f.s[0], CYL__BFMA(f.a[2] * f.w[0] - f.a[0] * f.w[2], f.s[1],
                   (f.a[0] * f.w[1] - f.a[1] * f.w[0]) * f.s[2])); /* m·s, m = a × w */
     z0 = f.a[0] * f.w[0] + f.a[1] * f.w[1] + f.a[2] * f.w[2], ze = f.a[0] * q->d[0] + f.a[1] * q->d[1] + f.a[2] * q->d[2];
-    /* its t interval [tc − h − er, tc + h + er] (er: N9's root bound, twice, where first order) */
-    e = 1 / f.A, tc = -B * e, h = CYL__BMAX(f.D, zero) * aa;
-    CYL__BP(sqrt)(&h), h *= e;
-    T = CYL__BABS(tc) + h;
-    er = 2 * (k0 * ((CYL__BK)1.5 + (CYL__BK)0.5 * f.ad * e) * (aa * f.S + T * T * f.ad) / (h * f.A) + 4 * u * T) + 4 * u * T;
-    er = CYL__BSEL(er * f.A <= (CYL__BK)0.5 * (h * f.A), er, zero + (CYL__BK)CYL__HUGE);
-    lo = CYL__BMAX(tc - h - er, zero + q->tmin);
-    hi = CYL__BMIN(tc + h + er, zero + (best < q->tmax ? best : q->tmax));
+    /* its t interval: every root or contact the scalar call can report is tc ± √(|a|²D)/A with its
+       D at most eD above, its A at least A − eA, its tc = −B/A within er, B and A erring by at
+       most 8u|a|²|w||d| and 8.2u|a|²|d|² each (the standard model, as D's); A <= eA: unbounded */
+    nw = CYL__BABS(f.w[0]) + CYL__BABS(f.w[1]) + CYL__BABS(f.w[2]); /* >= |w| */
+    eA = (CYL__BK)(CYL__BDERR / 2) * u * f.ad, Am = f.A - eA;
+    e = 1 / f.A, tc = -B * e, h = CYL__BMAX(eD, zero) * aa;
+    CYL__BP(sqrt)(&h), h = h * (1 + 4 * u) / Am;
+    er = ((CYL__BK)(CYL__BDERR / 2) * u * aa * nw * q->nd + CYL__BABS(tc) * eA) / Am + 4 * u * (CYL__BABS(tc) + h);
+    er = CYL__BSEL(Am > 0, er + h, zero + (CYL__BK)CYL__HUGE); /* the half width */
+    lo = CYL__BMAX(tc - er, zero + q->tmin);
+    hi = CYL__BMIN(tc + er, zero + (best < q->tmax ? best : q->tmax));
     keep &= CYL__BNOT(lo > hi);
     /* the slab: z0 + tζ at lo and hi, beyond one cap plane by more than twice N9's bound */
     T = CYL__BMAX(CYL__BABS(lo), CYL__BABS(hi));
-    e = 2 * (64 * u * (na * (CYL__BABS(f.w[0]) + CYL__BABS(f.w[1]) + CYL__BABS(f.w[2])) + Ha + T * na * q->nd)
+    e = 2 * (64 * u * (na * nw + Ha + T * na * q->nd)
              + 2 * u * T * CYL__BABS(ze)) + Ha;
     zl = z0 + lo * ze, zh = z0 + hi * ze;
     keep &= CYL__BNOT(((zl > e) & (zh > e)) | ((zl < -e) & (zh < -e)));
@@ -348,7 +358,7 @@ CYL_DEF int CYL__BN(batch_build)(CYL__BN(batch) *b, void *mem, const CYL__BN(cyl
     for (i = 0; i < nb * CYL__BW; i++) { /* the padding lanes repeat the last cylinder */
         const CYL__BN(cylinder) *cy = &cyls[i < n ? i : n - 1];
         CYL__BK H = (CYL__BK)cy->h * (CYL__BK)0.5, r = (CYL__BK)cy->r, sa;
-        int in = r >= 1 / CYL__BLIM_P && r <= CYL__BLIM_P, ka;
+        int in = r >= CYL__BLIM_R && r <= CYL__BLIM_P && ((H >= 1 / CYL__BLIM_H && H <= CYL__BLIM_H) || !(H < (CYL__BK)CYL__HUGE)), ka;
         for (m = 0, k = 0; k < 3; k++) {
             v[k] = cy->c[k], v[3 + k] = cy->a[k];
             in &= v[k] <= CYL__BLIM_P && v[k] >= -CYL__BLIM_P;
@@ -358,7 +368,7 @@ CYL_DEF int CYL__BN(batch_build)(CYL__BN(batch) *b, void *mem, const CYL__BN(cyl
         v[6] = r * r, v[7] = v[3] * v[3] + v[4] * v[4] + v[5] * v[5];
         sa = sizeof(CYL__BK) == 8 ? (CYL__BK)CYL_SQRT((double)v[7]) : (CYL__BK)CYL_SQRTF((float)v[7]);
         v[8] = H * sa, v[9] = sa * (1 + 4 * CYL__BU);
-        if (!in) v[6] = (CYL__BK)CYL__HUGE; /* r² infinite: always asked */
+        if (!in) v[6] = v[8] = (CYL__BK)CYL__HUGE; /* r² and H|a| infinite: always asked */
         for (f = 0; f < CYL__BF; f++) blocks[(i / CYL__BW) * (CYL__BF * CYL__BW) + (size_t)f * CYL__BW + i % CYL__BW] = v[f];
     }
     for (i = 0; i < n; i++) copy[i] = cyls[i];
@@ -427,7 +437,10 @@ CYL_DEF int CYL__BN(batch_any)(const CYL__BN(batch) *b, const CYL__BN(ray) *ray,
 #undef CYL__BI
 #undef CYL__BW
 #undef CYL__BU
+#undef CYL__BLIM
 #undef CYL__BLIM_P
+#undef CYL__BLIM_R
+#undef CYL__BLIM_H
 #undef CYL__BDERR
 #undef CYL__BF
 #undef CYL__BL

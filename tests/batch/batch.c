@@ -303,6 +303,35 @@ static void test_fuzz_block_of_out_of_range_cylinders(void)
 }
 #endif
 
+#ifdef T_DOUBLE
+/* Found by fuzz/fuzz_batch.c (CAPS|PRECISE): cylinder 10 (r = 1e200, h = 1.6e-16) lies outside the
+   filter's range, where the scalar call's exact path raises h/2 (t = 0.747, t_err = inf; the true
+   cap plane is crossed near t = 1). Once a nearer-in-index hit had set the best t, the slab test,
+   which assumes the call's crossing on the true cap planes, dropped it: the slab must not judge
+   a cylinder out of range either (H|a| infinite there too). */
+static void test_fuzz_out_of_range_cylinder_raised_by_the_call(void)
+{
+    static const CYL(cylinder) cy[11] = {
+        {{3.17412763e-13, 3.12638804e-13, 0.0}, {3.28070904e-13, -9.22337204e+18, 3.40394379e-13}, 3.13638004e-13, 3.13860049e-13},
+        {{0.0, 1.53251977e-16, 1.66370823e-16}, {6.9388939e-18, -3.29813954e-12, -16199.0}, 8095.5, 8095.5},
+        {{8095.5, 1157.5, 3.15303339e-13}, {5.60976332e-09, 5.60976332e-09, 5.60976332e-09}, 5.60976332e-09, 5.60976332e-09},
+        {{5.60976332e-09, 5.60976332e-09, 3.13860049e-13}, {0.0, 2.38524478e-18, -3.32411876e-12}, 1.28019817e-12, 3.13860049e-13},
+        {{5.04878699e-08, 1.75772584e-07, 6.58724457e-06}, {2.15004547e-08, -9.22337204e+18, 3.40394379e-13}, 3.17190718e-13, 3.13860049e-13},
+        {{4.01740863e-11, 3.41523684e-18, 8095.5}, {8095.5, 8095.5, 7.84650123e-14}, 6.84785562e-13, 5.60976332e-09},
+        {{5.60976332e-09, 5.60976332e-09, 5.60976332e-09}, {5.60976332e-09, 5.60976332e-09, 5.59793989e-09}, 3.13860049e-13, 1.08420217e-19},
+        {{1.37151575e-17, 0.0, -1.77576053e-15}, {3.19633209e-13, 8095.5, 8095.5}, 8095.5, 8095.5},
+        {{7.84650123e-14, 3.32722738e-12, 9.71661987e-16}, {-2.23779328e-16, 1e-200, 8.10197573e+18}, 8.10197573e+18, 8.10197573e+18},
+        {{8.10197573e+18, 8.10197573e+18, 8.10197573e+18}, {8.10197573e+18, 8.10197573e+18, 3.57641602}, 114.304688, 0.000304013491},
+        {{5.20417043e-18, 12141872500000.0, 7.84650123e-14}, {5.1159077e-13, 5.96311195e-19, 1.22124533e-15}, 1e+200, 1.60190871e-16}};
+    CYL(ray) ray = {{-1.4584457033276614e+20, 126.4921875, 8095.5}, {1.4584457033276614e+20, -126.4921875, -8095.5}, 0, (T)INFINITY};
+    CYL(batch) b;
+    void *mem = build(&b, cy, 11);
+    agree(&b, &ray, cy, 11, CYL_CAPS | CYL_PRECISE);
+    agree(&b, &ray, cy, 11, CYL_CAPS);
+    free(mem);
+}
+#endif
+
 /* A cylinder outside the filter's range (here r below 2^-200, float 2^-32) is always asked, even
    far from the ray; one inside it, as far, is not (the manual's range). */
 static void test_out_of_range_cylinder_always_asked(void)
@@ -439,6 +468,7 @@ int main(void)
     RUN_TEST(test_out_of_range_cylinder_always_asked);
 #ifdef T_DOUBLE
     RUN_TEST(test_fuzz_block_of_out_of_range_cylinders);
+    RUN_TEST(test_fuzz_out_of_range_cylinder_raised_by_the_call);
 #endif
     RUN_TEST(test_empty_batch);
     RUN_TEST(test_build_errors);
