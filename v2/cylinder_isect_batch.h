@@ -27,10 +27,11 @@
    found so far, t range included: the infinite tube, the t interval it leaves and the slab
    between the cap planes, each compared with a bound on its rounding and on the scalar call's
    (the standard model; N9 of cylinder_isect.h). The rest, a few per ray in a scene, take the
-   scalar call, in index order. Not dropped, so asked: rays within about √u of a tangency,
-   near the axis' direction, or outside the range below; a scene of rays parallel to the axes
-   of cylinders parallel to them (an axis-aligned lidar looking down on stems) pays a scalar
-   call for every cylinder whose slab its range crosses.
+   scalar call, in index order. Not dropped, so asked: cylinders whose axis the ray follows
+   within about √(18u) (their t interval is unbounded), and everything outside the range
+   below; a scene of rays parallel to the axes of cylinders parallel to them (an axis-aligned
+   lidar looking down on stems) pays a scalar call for every cylinder whose slab its range
+   crosses.
    size_t cylf_batch_bytes(size_t n)
        The memory a batch of n cylinders takes (any alignment); 0 if n is too large for size_t.
    int cylf_batch_build(cylf_batch *b, void *mem, const cylf_cylinder *cyls, size_t n)
@@ -41,9 +42,11 @@
 
    The filter works in the API's own type (the float API's in float, whose bounds are wider
    than the scalar call's double: more cylinders asked, twice the lanes per instruction).
-   Outside its range every cylinder is asked: a ray whose largest |o| component exceeds 2^200
-   (float: 2^32); a cylinder likewise for c, or whose r lies outside 2^±200 (2^±32). a and d
-   may have any length (the filter scales them by powers of two).
+   Outside its range every cylinder is asked: a ray whose largest |o| component exceeds 2^100
+   (float: 2^32); a cylinder likewise for c, or whose r lies outside 2^±100 (2^±32), or h/2
+   outside 2^±400 (double; infinite is in range). a and d may have any length (the filter
+   scales them by powers of two). Where the float API computes in float (CYL_FLOAT_WIDE 0):
+   2^16, r from 2^-20, h/2 within 2^±58.
 
    LAYOUT (in mem, 64-byte aligned): blocks of 8 cylinders in double, 16 in float, structure of
    arrays, each field of a block one 64-byte line: the center c, the axis a scaled to a largest
