@@ -54,10 +54,11 @@
    block padded; then the cylinders as given.
 
    CODE: the filter is written once over a vector: GCC vector extensions where the compiler has
-   them (gcc, clang) at the width of the instruction set the build targets (SSE2, AVX2, NEON;
-   with AVX-512, 256 bits and its 32 registers unless CYL_BATCH_VECTOR_BYTES is 64; square
-   roots, fused multiply-adds and masks by its intrinsics), else, or with CYL_BATCH_PORTABLE,
-   the same text over one lane. `make bench-batch` measures each form.
+   them (gcc, clang) for x86 at the width of the instruction set the build targets (SSE2,
+   AVX2; with AVX-512, 256 bits and its 32 registers unless CYL_BATCH_VECTOR_BYTES is 64;
+   square roots, fused multiply-adds and masks by its intrinsics), else (NEON not measured
+   yet), or with CYL_BATCH_PORTABLE, the same text over one lane. `make bench-batch` measures
+   each form.
 */
 #ifndef CYLINDER_ISECT_BATCH_H
 #define CYLINDER_ISECT_BATCH_H
@@ -66,8 +67,7 @@
 /* CYL__BVEC: the bytes of the filter's vector, 0 for the portable form. With AVX-512, 32 unless
    CYL_BATCH_VECTOR_BYTES is 64: 256-bit vectors with AVX-512's 32 registers measured faster here
    (make bench-batch's avx512 rows; gcc's own default width for x86-64-v4 too). */
-#if (defined(__GNUC__) || defined(__clang__)) && !defined(CYL_BATCH_PORTABLE) && \
-    (defined(__SSE2__) || (defined(__aarch64__) && defined(__ARM_NEON)))
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(CYL_BATCH_PORTABLE) && defined(__SSE2__)
 #if defined(__AVX512F__) && defined(CYL_BATCH_VECTOR_BYTES) && CYL_BATCH_VECTOR_BYTES == 64
 #define CYL__BVEC 64
 #elif defined(__AVX__)
@@ -75,11 +75,7 @@
 #else
 #define CYL__BVEC 16
 #endif
-#if defined(__SSE2__)
 #include <immintrin.h>
-#else
-#include <arm_neon.h>
-#endif
 #else
 #define CYL__BVEC 0
 #endif
@@ -187,10 +183,8 @@ CYL__ALWAYS void CYL__BP(sqrt)(CYL__BP(v) *xp)
     if (sizeof(CYL__BK) == 8) CYL__BSQ(__m512d, _mm512_sqrt_pd) else CYL__BSQ(__m512, _mm512_sqrt_ps)
 #elif CYL__BVEC == 32
     if (sizeof(CYL__BK) == 8) CYL__BSQ(__m256d, _mm256_sqrt_pd) else CYL__BSQ(__m256, _mm256_sqrt_ps)
-#elif defined(__SSE2__)
-    if (sizeof(CYL__BK) == 8) CYL__BSQ(__m128d, _mm_sqrt_pd) else CYL__BSQ(__m128, _mm_sqrt_ps)
 #else
-    if (sizeof(CYL__BK) == 8) CYL__BSQ(float64x2_t, vsqrtq_f64) else CYL__BSQ(float32x4_t, vsqrtq_f32)
+    if (sizeof(CYL__BK) == 8) CYL__BSQ(__m128d, _mm_sqrt_pd) else CYL__BSQ(__m128, _mm_sqrt_ps)
 #endif
 #undef CYL__BSQ
 #else
@@ -208,14 +202,8 @@ CYL__ALWAYS unsigned CYL__BP(bits)(const CYL__BP(m) *mp)
     if (sizeof(CYL__BK) == 8) CYL__BMV(__m512i, _mm512_test_epi64_mask(y, y)) else CYL__BMV(__m512i, _mm512_test_epi32_mask(y, y))
 #elif CYL__BVEC == 32
     if (sizeof(CYL__BK) == 8) CYL__BMV(__m256d, _mm256_movemask_pd(y)) else CYL__BMV(__m256, _mm256_movemask_ps(y))
-#elif defined(__SSE2__)
-    if (sizeof(CYL__BK) == 8) CYL__BMV(__m128d, _mm_movemask_pd(y)) else CYL__BMV(__m128, _mm_movemask_ps(y))
 #else
-    {
-        unsigned b = 0, j;
-        for (j = 0; j < (unsigned)CYL__BL; j++) b |= (unsigned)(m[j] != 0) << j;
-        return b;
-    }
+    if (sizeof(CYL__BK) == 8) CYL__BMV(__m128d, _mm_movemask_pd(y)) else CYL__BMV(__m128, _mm_movemask_ps(y))
 #endif
 #undef CYL__BMV
 #else
