@@ -260,7 +260,7 @@ CYL__ALWAYS void CYL__BP(filter)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BK 
        most 8u|a|²|w||d| and 8.2u|a|²|d|² each (the standard model, as D's); A <= eA: unbounded */
     nw = CYL__BABS(f.w[0]) + CYL__BABS(f.w[1]) + CYL__BABS(f.w[2]); /* >= |w| */
     eA = (CYL__BK)(CYL__BDERR / 2) * u * f.ad, Am = f.A - eA;
-    e = 1 / f.A, tc = -B * e, h = CYL__BMAX(eD, zero) * aa;
+    e = 1 / f.A, tc = -B * e, h = CYL__BSEL(eD < zero, zero, eD) * aa; /* a NaN stays one (not BMAX) */
     CYL__BP(sqrt)(&h), h = h * (1 + 4 * u) / Am;
     er = ((CYL__BK)(CYL__BDERR / 2) * u * aa * nw * q->nd + CYL__BABS(tc) * eA) / Am + 4 * u * (CYL__BABS(tc) + h);
     er = CYL__BSEL(Am > 0, er + h, zero + (CYL__BK)CYL__HUGE); /* the half width */

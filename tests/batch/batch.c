@@ -332,6 +332,34 @@ static void test_fuzz_out_of_range_cylinder_raised_by_the_call(void)
 }
 #endif
 
+#ifndef T_DOUBLE
+/* Found by fuzz/fuzz_batch.c (float, OUTWARD, open tubes): cylinder 8 lies out of range (|c| near
+   2^70), so r² is infinite; P² overflowed too, D came out NaN, and the t interval's max(D, 0)
+   turned the NaN into 0: a finite interval that missed the call's hit at t = 2^120. A NaN must
+   stay one through the filter. */
+static void test_fuzz_nan_d_kept_through_the_interval(void)
+{
+    static const CYL(cylinder) cy[11] = {
+        {{6.84785562e-13f, 1e-30f, 1e-30f}, {1e-30f, 1e-30f, 1e-30f}, 1e-30f, 1e-30f},
+        {{0.0f, 0.0f, 5.82650247e-16f}, {1e-30f, 1e-30f, -1e-30f}, 1e-30f, 1e-30f},
+        {{1e-30f, 1e-30f, 1e-30f}, {1e-30f, 1e-30f, 1e-30f}, 1e-30f, 1e-30f},
+        {{1e-30f, 1e-30f, 1e-30f}, {1e-30f, -1.63768738e-15f, 1e-30f}, 1e-30f, 1e-30f},
+        {{1e-30f, 1e-30f, -1e-30f}, {3.15303339e-13f, -2.34649633e-10f, 1e-30f}, 1e-30f, 1e-30f},
+        {{1e-30f, 1e-30f, 1e-30f}, {-9.61124897e-07f, 1e-30f, 1e-30f}, 1e-30f, 1e-30f},
+        {{1e-30f, 1e-30f, -1e-30f}, {8.91647867e-16f, 9.91394467e-16f, 1.1018687e+21f}, 1.1018687e+21f, 1.1018687e+21f},
+        {{0.0f, 15291.5f, 1.1018687e+21f}, {1.1018687e+21f, 2.80990029e+23f, 5.42101086e-20f}, 1.41039194e+23f, 1.1018687e+21f},
+        {{2.56548798e+11f, 1.1018687e+21f, 3.8244568e+20f}, {1.1018687e+21f, 1.1018687e+21f, 1.1018687e+21f}, 1.1018687e+21f, 1.1018687e+21f},
+        {{1.1018687e+21f, 1.1018687e+21f, 1.1018687e+21f}, {1.1018687e+21f, 1.17565568e+21f, 5.69652766e-05f}, 1.10673259e+21f, 1e-30f},
+        {{1e-30f, 1e-30f, 1e-30f}, {1e-30f, 1e-30f, -258.0f}, 1e-30f, 2.25979235e-11f}};
+    CYL(ray) ray = {{0, 0, 0}, {0, 0, 5.8265025e-16f}, 0, (T)INFINITY};
+    CYL(batch) b;
+    void *mem = build(&b, cy, 11);
+    agree(&b, &ray, cy, 11, CYL_OUTWARD);
+    agree(&b, &ray, cy, 11, 0u);
+    free(mem);
+}
+#endif
+
 /* A cylinder outside the filter's range (here r below 2^-200, float 2^-32) is always asked, even
    far from the ray; one inside it, as far, is not (the manual's range). */
 static void test_out_of_range_cylinder_always_asked(void)
@@ -466,6 +494,9 @@ int main(void)
     RUN_TEST(test_out_of_range_inputs_agree);
     RUN_TEST(test_the_filter_drops_certain_misses);
     RUN_TEST(test_out_of_range_cylinder_always_asked);
+#ifndef T_DOUBLE
+    RUN_TEST(test_fuzz_nan_d_kept_through_the_interval);
+#endif
 #ifdef T_DOUBLE
     RUN_TEST(test_fuzz_block_of_out_of_range_cylinders);
     RUN_TEST(test_fuzz_out_of_range_cylinder_raised_by_the_call);
