@@ -152,19 +152,28 @@ typedef int CYL__BP(m);
 #define CYL__BSEL(k_, x_, y_) ((k_) ? (x_) : (y_))
 #define CYL__BNOT(k_) (!(k_))
 #endif
+/* The intrinsics of the vector's width: CYL__BMM(op) names one, CYL__BMD and CYL__BMS are its
+   double and float types (the same vectors: copies between them cost no instruction). */
+#if CYL__BVEC == 64
+#define CYL__BMM(op) _mm512_##op
+#define CYL__BMD __m512d
+#define CYL__BMS __m512
+#elif CYL__BVEC == 32
+#define CYL__BMM(op) _mm256_##op
+#define CYL__BMD __m256d
+#define CYL__BMS __m256
+#elif CYL__BVEC
+#define CYL__BMM(op) _mm_##op
+#define CYL__BMD __m128d
+#define CYL__BMS __m128
+#endif
 /* x·y + z: one fused instruction where the build has the FMA (the bounds hold either way). */
 #if CYL__BVEC && defined(__FMA__)
 CYL__ALWAYS CYL__BP(v) CYL__BP(fma)(CYL__BP(v) x, CYL__BP(v) y, CYL__BP(v) z)
 {
 #define CYL__BFM(t, f) { t a_, b_, c_; __builtin_memcpy(&a_, &x, sizeof a_), __builtin_memcpy(&b_, &y, sizeof b_), __builtin_memcpy(&c_, &z, sizeof c_); \
                          a_ = f(a_, b_, c_); __builtin_memcpy(&x, &a_, sizeof x); return x; }
-#if CYL__BVEC == 64
-    if (sizeof(CYL__BK) == 8) CYL__BFM(__m512d, _mm512_fmadd_pd) else CYL__BFM(__m512, _mm512_fmadd_ps)
-#elif CYL__BVEC == 32
-    if (sizeof(CYL__BK) == 8) CYL__BFM(__m256d, _mm256_fmadd_pd) else CYL__BFM(__m256, _mm256_fmadd_ps)
-#else
-    if (sizeof(CYL__BK) == 8) CYL__BFM(__m128d, _mm_fmadd_pd) else CYL__BFM(__m128, _mm_fmadd_ps)
-#endif
+    if (sizeof(CYL__BK) == 8) CYL__BFM(CYL__BMD, CYL__BMM(fmadd_pd)) else CYL__BFM(CYL__BMS, CYL__BMM(fmadd_ps))
 #undef CYL__BFM
 }
 #define CYL__BFMA(x_, y_, z_) CYL__BP(fma)(x_, y_, z_)
@@ -179,13 +188,7 @@ CYL__ALWAYS void CYL__BP(sqrt)(CYL__BP(v) *xp)
     const CYL__BP(v) x = *xp;
 #if CYL__BVEC /* the intrinsic's type is the same vector: a copy, no instruction */
 #define CYL__BSQ(t, f) { t y; __builtin_memcpy(&y, &x, sizeof y); y = f(y); __builtin_memcpy(xp, &y, sizeof y); }
-#if CYL__BVEC == 64
-    if (sizeof(CYL__BK) == 8) CYL__BSQ(__m512d, _mm512_sqrt_pd) else CYL__BSQ(__m512, _mm512_sqrt_ps)
-#elif CYL__BVEC == 32
-    if (sizeof(CYL__BK) == 8) CYL__BSQ(__m256d, _mm256_sqrt_pd) else CYL__BSQ(__m256, _mm256_sqrt_ps)
-#else
-    if (sizeof(CYL__BK) == 8) CYL__BSQ(__m128d, _mm_sqrt_pd) else CYL__BSQ(__m128, _mm_sqrt_ps)
-#endif
+    if (sizeof(CYL__BK) == 8) CYL__BSQ(CYL__BMD, CYL__BMM(sqrt_pd)) else CYL__BSQ(CYL__BMS, CYL__BMM(sqrt_ps))
 #undef CYL__BSQ
 #else
     *xp = sizeof(CYL__BK) == 8 ? (CYL__BK)CYL_SQRT((double)x) : (CYL__BK)CYL_SQRTF((float)x);
@@ -200,10 +203,8 @@ CYL__ALWAYS unsigned CYL__BP(bits)(const CYL__BP(m) *mp)
 #define CYL__BMV(t, f) { t y; __builtin_memcpy(&y, &m, sizeof y); return (unsigned)f; }
 #if CYL__BVEC == 64
     if (sizeof(CYL__BK) == 8) CYL__BMV(__m512i, _mm512_test_epi64_mask(y, y)) else CYL__BMV(__m512i, _mm512_test_epi32_mask(y, y))
-#elif CYL__BVEC == 32
-    if (sizeof(CYL__BK) == 8) CYL__BMV(__m256d, _mm256_movemask_pd(y)) else CYL__BMV(__m256, _mm256_movemask_ps(y))
 #else
-    if (sizeof(CYL__BK) == 8) CYL__BMV(__m128d, _mm_movemask_pd(y)) else CYL__BMV(__m128, _mm_movemask_ps(y))
+    if (sizeof(CYL__BK) == 8) CYL__BMV(CYL__BMD, CYL__BMM(movemask_pd)(y)) else CYL__BMV(CYL__BMS, CYL__BMM(movemask_ps)(y))
 #endif
 #undef CYL__BMV
 #else
@@ -439,6 +440,9 @@ CYL_DEF int CYL__BN(batch_any)(const CYL__BN(batch) *b, const CYL__BN(ray) *ray,
 #undef CYL__BSEL
 #undef CYL__BNOT
 #undef CYL__BUNROLL
+#undef CYL__BMM
+#undef CYL__BMD
+#undef CYL__BMS
 #undef CYL__BABS
 #undef CYL__BFMA
 #undef CYL__BMAX
