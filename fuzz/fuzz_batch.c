@@ -46,6 +46,13 @@ static const unsigned fz_opts[8] = {0u, CYL_CAPS, CYL_CAPS | CYL_NO_TANGENT, CYL
                                     CYL_CAPS | CYL_TRUSTED, CYL_CAPS | CYL_PRECISE, CYL_OUTWARD, 0x80u};
 
 #define FZ_API(P, T, HUGE_, TINY_)                                                                    \
+    /* an empty batch still reports the ray's and the options' errors (a valid cylinder's call's) */ \
+    static int fz_ray_error_##P(const cyl##P##_ray *ray, unsigned opts)                               \
+    {                                                                                                 \
+        static const cyl##P##_cylinder unit = {{0, 0, 0}, {0, 0, 1}, 1, 1};                           \
+        int rc = cyl##P##_occluded(ray, &unit, opts);                                                 \
+        return rc < 0 ? rc : 0;                                                                       \
+    }                                                                                                 \
     static void fz_##P(fz_in *in, unsigned opts, size_t n, uint8_t aim)                              \
     {                                                                                                 \
         static const cyl##P##_ray probe = {{0, 0, 0}, {1, 0, 0}, 0, 1};                              \
@@ -97,19 +104,6 @@ static const unsigned fz_opts[8] = {0u, CYL_CAPS, CYL_CAPS | CYL_NO_TANGENT, CYL
         free(mem);                                                                                    \
     }
 
-/* An empty batch still reports the ray's and the options' errors (a valid cylinder's call's). */
-static int fz_ray_error_f(const cylf_ray *ray, unsigned opts)
-{
-    static const cylf_cylinder unit = {{0, 0, 0}, {0, 0, 1}, 1, 1};
-    int rc = cylf_occluded(ray, &unit, opts);
-    return rc < 0 ? rc : 0;
-}
-static int fz_ray_error_d(const cyld_ray *ray, unsigned opts)
-{
-    static const cyld_cylinder unit = {{0, 0, 0}, {0, 0, 1}, 1, 1};
-    int rc = cyld_occluded(ray, &unit, opts);
-    return rc < 0 ? rc : 0;
-}
 FZ_API(f, float, 1e30, 1e-30)
 FZ_API(d, double, 1e200, 1e-200)
 

@@ -121,6 +121,7 @@
 #define CYL__BLIM_P CYL__BLIM(1.2676506002282294e+30, 4294967296.0, 65536.0)
 #define CYL__BLIM_R CYL__BLIM(7.8886090522101181e-31, 2.3283064365386963e-10, 9.5367431640625e-07)
 #define CYL__BLIM_H CYL__BLIM(2.5822498780869086e+120, 3.4028234663852886e+38, 2.8823037615171174e+17)
+#define CYL__BSQRT1(x) (sizeof(CYL__BK) == 8 ? (CYL__BK)CYL_SQRT((double)(x)) : (CYL__BK)CYL_SQRTF((float)(x)))
 #define CYL__BF 10 /* fields: c (3), a (3), r² (+inf: always asked), |a|², H|a|, |a| */
 
 typedef struct CYL__BN(batch) {
@@ -191,7 +192,7 @@ CYL__ALWAYS void CYL__BP(sqrt)(CYL__BP(v) *xp)
     if (sizeof(CYL__BK) == 8) CYL__BSQ(CYL__BMD, CYL__BMM(sqrt_pd)) else CYL__BSQ(CYL__BMS, CYL__BMM(sqrt_ps))
 #undef CYL__BSQ
 #else
-    *xp = sizeof(CYL__BK) == 8 ? (CYL__BK)CYL_SQRT((double)x) : (CYL__BK)CYL_SQRTF((float)x);
+    *xp = CYL__BSQRT1(x);
 #endif
 }
 
@@ -215,13 +216,6 @@ CYL__ALWAYS unsigned CYL__BP(bits)(const CYL__BP(m) *mp)
 /* The ray in the filter's type, once per query. */
 typedef struct CYL__BP(q) { CYL__BK o[3], d[3], nd, dd, tmin, tmax; int kd; } CYL__BP(q);
 
-/* The filter (the contract's "how"): of lanes p[j], those a scalar call might hit at a t in
-   [tmin, min(tmax, best)]. Every test rejects only where certain, from bounds on its own
-   rounding and the scalar call's (the standard model, each input exact); a NaN or an infinity
-   rejects nothing. The tube: D = r²A − P² below the tangent band by more than those. Its t
-   interval: tc ± √(|a|²D)/A with D, A and tc = −B/A each moved by their bounds against the
-   interval. The slab: the axial coordinate z0 + tζ at both ends of that interval on one side of
-   the cap planes by more than twice N9's bound at the farther end. */
 /* What the filter forms first, from the block's lanes at p and the ray. */
 typedef struct CYL__BP(tube) { CYL__BP(v) a[3], w[3], s[3], A, P, S, ad, D; } CYL__BP(tube);
 CYL__ALWAYS void CYL__BP(tube_of)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BP(tube) *f)
@@ -237,6 +231,13 @@ CYL__ALWAYS void CYL__BP(tube_of)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BP
     f->ad = CYL__BLOAD(p + 7 * CYL__BW) * q->dd, f->D = CYL__BFMA(r2, f->A, -(f->P * f->P));
 }
 
+/* The filter (the contract's "how"): of lanes p[j], those a scalar call might hit at a t in
+   [tmin, min(tmax, best)]. Every test rejects only where certain, from bounds on its own
+   rounding and the scalar call's (the standard model, each input exact); a NaN or an infinity
+   rejects nothing. The tube: D = r²A − P² below the tangent band by more than those. Its t
+   interval: tc ± √(|a|²D)/A with D, A and tc = −B/A each moved by their bounds against the
+   interval. The slab: the axial coordinate z0 + tζ at both ends of that interval on one side of
+   the cap planes by more than twice N9's bound at the farther end. */
 CYL__ALWAYS void CYL__BP(filter)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BK best, CYL__BP(m) *out)
 {
     const CYL__BK u = CYL__BU;
@@ -297,22 +298,21 @@ CYL__ALWAYS int CYL__BP(query)(CYL__BP(q) *q, const CYL__BN(ray) *ray)
     q->kd = CYL__BS(expo)(dm); /* d nonzero (validated, or CYL_TRUSTED's promise) */
     for (i = 0; i < 3; i++) q->d[i] = CYL__BS(scale)(ray->d[i], -q->kd);
     x = q->d[0] * q->d[0] + q->d[1] * q->d[1] + q->d[2] * q->d[2];
-    q->nd = (sizeof(CYL__BK) == 8 ? (CYL__BK)CYL_SQRT((double)x) : (CYL__BK)CYL_SQRTF((float)x)) * (1 + 4 * CYL__BU), q->dd = x;
+    q->nd = CYL__BSQRT1(x) * (1 + 4 * CYL__BU), q->dd = x;
     q->tmin = CYL__BP(tscale)(ray->tmin, q->kd, -(CYL__BK)CYL__HUGE), q->tmax = CYL__BP(tscale)(ray->tmax, q->kd, (CYL__BK)CYL__HUGE);
     return om <= CYL__BLIM_P;
 }
 
-/* The candidates of a block at p with `left` cylinders from it on (bit j: its j-th), all of them where
-   the ray is out of range; block_of: block k of b. */
-CYL__ALWAYS unsigned CYL__BP(block)(const CYL__BK *p, size_t left, const CYL__BP(q) *q, int inrange, CYL__BK best)
+/* The candidates of block k of b (bit j: its j-th cylinder), all of them where the ray is out of range. */
+CYL__ALWAYS unsigned CYL__BP(block_of)(const CYL__BN(batch) *b, size_t k, const CYL__BP(q) *q, int inrange, CYL__BK best)
 {
+    const CYL__BK *p = b->blocks + k * (CYL__BF * CYL__BW);
+    const size_t left = b->n - k * CYL__BW;
     unsigned m = (2u << (CYL__BW - 1)) - 1u, j;
     CYL__BP(m) keep;
     if (inrange) CYL__BUNROLL for (m = 0u, j = 0; j < CYL__BW; j += CYL__BL) CYL__BP(filter)(p + j, q, best, &keep), m |= CYL__BP(bits)(&keep) << j;
     return left < CYL__BW ? m & ((1u << left) - 1u) : m; /* the padding lanes are no cylinders */
 }
-CYL__ALWAYS unsigned CYL__BP(block_of)(const CYL__BN(batch) *b, size_t k, const CYL__BP(q) *q, int inrange, CYL__BK best)
-{ return CYL__BP(block)(b->blocks + k * (CYL__BF * CYL__BW), b->n - k * CYL__BW, q, inrange, best); }
 
 /* The lowest set bit's index (m nonzero). */
 CYL__ALWAYS int CYL__BP(ctz)(unsigned m)
@@ -358,7 +358,7 @@ CYL_DEF int CYL__BN(batch_build)(CYL__BN(batch) *b, void *mem, const CYL__BN(cyl
         }
         for (ka = CYL__BS(expo)(m), k = 0; k < 3; k++) v[3 + k] = CYL__BS(scale)(v[3 + k], -ka); /* largest in [1, 2) */
         v[6] = r * r, v[7] = v[3] * v[3] + v[4] * v[4] + v[5] * v[5];
-        sa = sizeof(CYL__BK) == 8 ? (CYL__BK)CYL_SQRT((double)v[7]) : (CYL__BK)CYL_SQRTF((float)v[7]);
+        sa = CYL__BSQRT1(v[7]);
         v[8] = H * sa, v[9] = sa * (1 + 4 * CYL__BU);
         if (!in) v[6] = v[8] = (CYL__BK)CYL__HUGE; /* r² and H|a| infinite: always asked */
         for (f = 0; f < CYL__BF; f++) blocks[(i / CYL__BW) * (CYL__BF * CYL__BW) + (size_t)f * CYL__BW + i % CYL__BW] = v[f];
@@ -368,38 +368,32 @@ CYL_DEF int CYL__BN(batch_build)(CYL__BN(batch) *b, void *mem, const CYL__BN(cyl
     return 0;
 }
 
-/* The scalar call a candidate takes, out of line: the filter's loop keeps its registers (and
-   gcc still folds constant options into it when every call site passes the same). */
-CYL__OUT int CYL__BP(ask)(const CYL__BN(ray) *ray, const CYL__BN(cylinder) *cyl, unsigned opts, CYL__BR *t)
+/* A query's start: the ray's and the options' errors as the scalar call gives them (on a valid
+   cylinder), else 0 and the ray in the filter's type, *inrange 0 where every cylinder is asked. */
+CYL__ALWAYS int CYL__BP(start)(const CYL__BN(ray) *ray, unsigned opts, CYL__BP(q) *q, int *inrange)
 {
-    CYL__BN(hit) hit;
-    int rc = CYL__BN(intersect)(ray, cyl, opts, &hit);
-    if (rc == CYL_HIT) *t = hit.t;
+    static const CYL__BN(cylinder) unit = {{0, 0, 0}, {0, 0, 1}, 1, 1};
+    int rc = CYL__BS(validate)(ray, &unit, opts);
+    if (!rc) *inrange = CYL__BP(query)(q, ray);
     return rc;
 }
-CYL__OUT int CYL__BP(ask_any)(const CYL__BN(ray) *ray, const CYL__BN(cylinder) *cyl, unsigned opts)
-{ return CYL__BN(occluded)(ray, cyl, opts); }
 
 CYL_DEF int CYL__BN(batch_nearest)(const CYL__BN(batch) *b, const CYL__BN(ray) *ray, unsigned opts, size_t *index, CYL__BR *t)
 {
-    static const CYL__BN(cylinder) unit = {{0, 0, 0}, {0, 0, 1}, 1, 1};
     CYL__BP(q) q;
-    CYL__BR bt = 0, ti = 0;
+    CYL__BN(hit) hit;
+    CYL__BR bt = 0;
     size_t k, i, found = 0;
-    int rc, got = 0, inrange;
+    int rc, got = 0, inrange = 0;
     CYL__BK bk;
     unsigned m;
     if (!b || !ray || !index || !t) return CYL_E_NULL;
-    const CYL__BK *const blocks = b->blocks; /* in registers across the scalar calls */
-    const CYL__BN(cylinder) *const cyls = b->cyls;
-    const size_t n = b->n, nb = b->nb;
-    if ((rc = CYL__BS(validate)(ray, &unit, opts)) != 0) return rc;
-    inrange = CYL__BP(query)(&q, ray), bk = q.tmax;
-    for (k = 0; k < nb; k++)
-        for (m = CYL__BP(block)(blocks + k * (CYL__BF * CYL__BW), n - k * CYL__BW, &q, inrange, bk); m; m &= m - 1u) {
+    if ((rc = CYL__BP(start)(ray, opts, &q, &inrange)) != 0) return rc;
+    for (bk = q.tmax, k = 0; k < b->nb; k++)
+        for (m = CYL__BP(block_of)(b, k, &q, inrange, bk); m; m &= m - 1u) {
             i = k * CYL__BW + (size_t)CYL__BP(ctz)(m);
-            if (CYL__BP(ask)(ray, &cyls[i], opts, &ti) == CYL_HIT && (!got || ti < bt))
-                bt = ti, found = i, got = 1, bk = CYL__BP(tscale)(bt, q.kd, (CYL__BK)CYL__HUGE);
+            if (CYL__BN(intersect)(ray, &b->cyls[i], opts, &hit) == CYL_HIT && (!got || hit.t < bt))
+                bt = hit.t, found = i, got = 1, bk = CYL__BP(tscale)(bt, q.kd, (CYL__BK)CYL__HUGE);
         }
     if (got) *index = found, *t = bt;
     return got;
@@ -407,17 +401,15 @@ CYL_DEF int CYL__BN(batch_nearest)(const CYL__BN(batch) *b, const CYL__BN(ray) *
 
 CYL_DEF int CYL__BN(batch_any)(const CYL__BN(batch) *b, const CYL__BN(ray) *ray, unsigned opts)
 {
-    static const CYL__BN(cylinder) unit = {{0, 0, 0}, {0, 0, 1}, 1, 1};
     CYL__BP(q) q;
     size_t k;
-    int rc, inrange;
+    int rc, inrange = 0;
     unsigned m;
     if (!b || !ray) return CYL_E_NULL;
-    if ((rc = CYL__BS(validate)(ray, &unit, opts)) != 0) return rc;
-    inrange = CYL__BP(query)(&q, ray);
+    if ((rc = CYL__BP(start)(ray, opts, &q, &inrange)) != 0) return rc;
     for (k = 0; k < b->nb; k++)
         for (m = CYL__BP(block_of)(b, k, &q, inrange, q.tmax); m; m &= m - 1u)
-            if (CYL__BP(ask_any)(ray, &b->cyls[k * CYL__BW + (size_t)CYL__BP(ctz)(m)], opts) == 1) return 1;
+            if (CYL__BN(occluded)(ray, &b->cyls[k * CYL__BW + (size_t)CYL__BP(ctz)(m)], opts) == 1) return 1;
     return 0;
 }
 
@@ -435,6 +427,7 @@ CYL_DEF int CYL__BN(batch_any)(const CYL__BN(batch) *b, const CYL__BN(ray) *ray,
 #undef CYL__BLIM_H
 #undef CYL__BDERR
 #undef CYL__BF
+#undef CYL__BSQRT1
 #undef CYL__BL
 #undef CYL__BLOAD
 #undef CYL__BSEL

@@ -21,13 +21,15 @@
 #ifdef T_DOUBLE
 #define T double
 #define CYL(x) cyld_##x
-#define T_HUGE 1e200 /* beyond the filter's range (2^96): such cylinders are always asked */
+#define BATCH(x) cyl__db_##x /* the batch's internals, for the tests of its filter */
+#define T_HUGE 1e200 /* beyond the filter's range (2^100): such cylinders are always asked */
 #define TANG_TOL CYL_TANGENT_TOL
-#define T_TINY_R 1e-250 /* r below the filter's range (2^-200) */
+#define T_TINY_R 1e-250 /* r below the filter's range (2^-100) */
 #else
 #define T float
 #define CYL(x) cylf_##x
-#define T_HUGE 1e30f
+#define BATCH(x) cyl__fb_##x
+#define T_HUGE 1e30f /* beyond the filter's range (2^32) */
 #define TANG_TOL (double)CYL_TANGENT_TOLF
 #define T_TINY_R 1e-20f /* r below the filter's range (2^-32) */
 #endif
@@ -369,15 +371,9 @@ static void test_out_of_range_cylinder_always_asked(void)
     CYL(batch) b;
     void *mem = build(&b, cy, 3);
     unsigned m;
-#ifdef T_DOUBLE
-    cyl__db_q q;
-    TEST_ASSERT_TRUE(cyl__db_query(&q, &ray));
-    m = cyl__db_block_of(&b, 0, &q, 1, q.tmax);
-#else
-    cyl__fb_q q;
-    TEST_ASSERT_TRUE(cyl__fb_query(&q, &ray));
-    m = cyl__fb_block_of(&b, 0, &q, 1, q.tmax);
-#endif
+    BATCH(q) q;
+    TEST_ASSERT_TRUE(BATCH(query)(&q, &ray));
+    m = BATCH(block_of)(&b, 0, &q, 1, q.tmax);
     TEST_ASSERT_EQUAL_HEX(6u, m); /* 1 (out of range) and 2 (hit); not 0 */
     agree(&b, &ray, cy, 3, CYL_CAPS);
     free(mem);
@@ -397,22 +393,12 @@ static void test_the_filter_drops_certain_misses(void)
     scene(cy, N, 100);
     mem = build(&b, cy, N);
     for (r = 0; r < rays; r++) {
-#ifdef T_DOUBLE
-        cyl__db_q q;
-#else
-        cyl__fb_q q;
-#endif
+        BATCH(q) q;
         CYL(ray) ray = ray_for(cy, N, 100, CYL_CAPS);
         ray.tmin = 0, ray.tmax = (T)INFINITY;
-#ifdef T_DOUBLE
-        TEST_ASSERT_TRUE(cyl__db_query(&q, &ray));
+        TEST_ASSERT_TRUE(BATCH(query)(&q, &ray));
         for (k = 0; k < b.nb; k++) {
-            unsigned m = cyl__db_block_of(&b, k, &q, 1, q.tmax);
-#else
-        TEST_ASSERT_TRUE(cyl__fb_query(&q, &ray));
-        for (k = 0; k < b.nb; k++) {
-            unsigned m = cyl__fb_block_of(&b, k, &q, 1, q.tmax);
-#endif
+            unsigned m = BATCH(block_of)(&b, k, &q, 1, q.tmax);
             for (; m; m &= m - 1u) asked++;
         }
     }
