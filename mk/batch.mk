@@ -2,7 +2,9 @@
 # v2's header until v2 replaces v1.
 #   make test V=2      also runs tests/batch/batch.c (float and double) in every configuration of
 #                      the root Makefile, and built for x86-64-v3 (AVX2), for x86-64-v4 (AVX-512,
-#                      where this machine has it) and in the batch's portable form
+#                      where this machine has it), in the batch's portable form, and the float API
+#                      computed in float (CYL_FLOAT_WIDE=0; CYL_NO_DOUBLE at -Os); make cross-test
+#                      V=2 runs it on each architecture it builds for
 #   make bench-batch   ns per test of the batch against the scalar loop, float and double, N = 1024,
 #                      4096, 65536 and 2^20, for each form this machine runs: -O2 (SSE2), the
 #                      portable form, x86-64-v3 (AVX2), x86-64-v4 (AVX-512, with 256-bit vectors,
@@ -15,21 +17,24 @@ HOST_AVX512 := $(shell grep -qw avx512f /proc/cpuinfo 2>/dev/null && test "$$(un
 DEPS_GOALS_batch := bench-batch
 
 ifeq ($(V),2)
-# $(1) configuration, $(2) runner name, $(3) extra flags (the configuration's own flags first)
+# $(1) configuration, $(2) runner name, $(3) extra flags (the configuration's own flags first),
+# $(4) the APIs: float double, or float alone
 define BATCH_RUNNER
-$(BUILD)/$(1)/$(2)_float: tests/batch/batch.c $(BATCH_HDRS) $(BUILD)/$(1)/unity.o
+$(BUILD)/$(1)/$(2)_float $(BUILD)/$(1)/$(2)_double: $(BUILD)/$(1)/$(2)_%: tests/batch/batch.c $(BATCH_HDRS) $(BUILD)/$(1)/unity.o
 	@mkdir -p $$(@D)
-	$$(CFG_CC_$(1)) $$(CFG_FLAGS_$(1)) $(3) $(UNITY_FLAGS) -I. $$< -x none $(BUILD)/$(1)/unity.o -lm -o $$@
-$(BUILD)/$(1)/$(2)_double: tests/batch/batch.c $(BATCH_HDRS) $(BUILD)/$(1)/unity.o
-	@mkdir -p $$(@D)
-	$$(CFG_CC_$(1)) $$(CFG_FLAGS_$(1)) $(3) -DT_DOUBLE $(UNITY_FLAGS) -I. $$< -x none $(BUILD)/$(1)/unity.o -lm -o $$@
-RUNNERS += $(BUILD)/$(1)/$(2)_float $(BUILD)/$(1)/$(2)_double
+	$$(CFG_CC_$(1)) $$(CFG_FLAGS_$(1)) $(3) $$(if $$(filter double,$$*),-DT_DOUBLE) $(UNITY_FLAGS) -I. $$< -x none $(BUILD)/$(1)/unity.o -lm -o $$@
+RUNNERS += $(foreach p,$(or $(4),float double),$(BUILD)/$(1)/$(2)_$(p))
 endef
 $(foreach c,$(CONFIGS),$(eval $(call BATCH_RUNNER,$(c),batch)))
 $(eval $(call BATCH_RUNNER,gcc-O2,batch_portable,-DCYL_BATCH_PORTABLE))
+# The float API's filter and call both in float (CYL_FLOAT_WIDE 0: its own bound factor and range),
+# and as a float-only firmware builds it (CYL_NO_DOUBLE, no vectors, for size).
+$(eval $(call BATCH_RUNNER,gcc-O2,batch_narrow,-DCYL_FLOAT_WIDE=0,float))
+$(eval $(call BATCH_RUNNER,gcc-O2,batch_float_only,-DCYL_NO_DOUBLE -DCYL_BATCH_PORTABLE -Os,float))
 ifeq ($(shell uname -m),x86_64)
 $(eval $(call BATCH_RUNNER,gcc-O2,batch_avx2,-march=x86-64-v3))
 $(eval $(call BATCH_RUNNER,clang-O2,batch_avx2,-march=x86-64-v3))
+$(eval $(call BATCH_RUNNER,gcc-O2,batch_avx2_narrow,-march=x86-64-v3 -DCYL_FLOAT_WIDE=0,float))
 endif
 ifeq ($(HOST_AVX512),1)
 $(eval $(call BATCH_RUNNER,gcc-O2,batch_avx512,-march=x86-64-v4))

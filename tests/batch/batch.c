@@ -284,6 +284,130 @@ static void test_out_of_range_inputs_agree(void)
     free(mem);
 }
 
+/* 2^e times a value in [1, 2), e uniform in [lo, hi] clamped to [LO, HI] (T's exponents, less
+   a margin: every value finite and normal). */
+#ifdef T_DOUBLE
+enum { LO = -900, HI = 900 };
+#else
+enum { LO = -110, HI = 110 };
+#endif
+static T mag(int lo, int hi)
+{
+    int e = lo + (int)(rnd() * (hi - lo + 1));
+    return (T)ldexp(1 + rnd(), e < LO ? LO : e > HI ? HI : e);
+}
+
+/* Scenes of any proportions, at any scale: each trial a scale 2^E over most of T's exponents,
+   then cylinders whose center, radius and height, and a ray whose origin (near or far from a
+   center) and length, lie within 2^±40 to 2^±100 of it, independently. So thin, flat, long, far
+   and tiny cylinders straddle the filter's range (float in float: 2^16, r from 2^-20, h/2
+   2^±58; float in double 2^32; double 2^100, h/2 2^±400) and the ratios where the scalar call's
+   exact path raises r or h/2. fuzz_batch found a difference against a filter whose range was
+   wider than the header's, in each working type; this finds those too. */
+static void test_any_proportions_agree(void)
+{
+    enum { TRIALS = 1500, NMAX = 24 };
+    static const unsigned opts[] = {0u, CYL_CAPS, CYL_CAPS | CYL_TRUSTED};
+    CYL(cylinder) cy[NMAX];
+    size_t trial, i, o;
+    int k;
+    rng_state = 20261207u;
+    for (trial = 0; trial < TRIALS; trial++) {
+        const int E = LO + (int)(rnd() * (HI - LO + 1));
+        size_t n = 1 + (size_t)(rnd() * NMAX) % NMAX;
+        const CYL(cylinder) *c;
+        CYL(ray) ray;
+        CYL(batch) b;
+        void *mem;
+        T far, dir[3];
+        for (i = 0; i < n; i++) {
+            far = mag(E - 40, E + 10);
+            unit_dir(dir);
+            for (k = 0; k < 3; k++) cy[i].c[k] = dir[k] * far;
+            unit_dir(cy[i].a);
+            if (rnd() < 0.3) cy[i].a[0] = cy[i].a[1] = 0, cy[i].a[2] = 1;
+            for (k = 0; k < 3; k++) cy[i].a[k] *= (T)ldexp(1, (int)(rnd() * 40) - 20);
+            cy[i].r = mag(E - 100, E + 40), cy[i].h = rnd() < 0.1 ? (T)INFINITY : mag(E - 100, E + 40);
+        }
+        c = &cy[(size_t)(rnd() * (double)n) % n];
+        far = mag(E - 60, E + 20);
+        unit_dir(dir);
+        for (k = 0; k < 3; k++) ray.o[k] = c->c[k] + dir[k] * far;
+        if (rnd() < 0.5) /* toward the center: crosses the cylinder */
+            for (k = 0; k < 3; k++) ray.d[k] = (T)((double)c->c[k] - (double)ray.o[k]);
+        else if (rnd() < 0.5) /* along the axis */
+            for (k = 0; k < 3; k++) ray.d[k] = c->a[k];
+        else unit_dir(ray.d);
+        if (eq(ray.d[0], 0) && eq(ray.d[1], 0) && eq(ray.d[2], 0)) ray.d[0] = 1;
+        ray.tmin = 0, ray.tmax = rnd() < 0.3 ? mag(-30, 30) : (T)INFINITY;
+        mem = build(&b, cy, n);
+        for (o = 0; o < sizeof opts / sizeof opts[0]; o++) agree(&b, &ray, cy, n, opts[o]);
+        free(mem);
+    }
+}
+
+/* One scene at every scale 2^k over T's exponents, rays and all (exact: powers of two; t
+   scales with o, tmin and tmax given for it), so that every magnitude at which a product the
+   filter forms overflows or underflows its type while the scalar call's does not (in float:
+   (w·s)² overflows, |w|² and r² not yet, for |o − c| ~ r near 2^63) is met, not only sampled. */
+static void test_every_scale_agrees(void)
+{
+    enum { N = 16, RAYS = 12 };
+    static const unsigned opts[] = {0u, CYL_CAPS};
+    CYL(cylinder) base[N], cy[N];
+    CYL(ray) rays[RAYS];
+    size_t i, r, o;
+    int e, k;
+    rng_state = 640u;
+    scene(base, N, 1);
+    for (i = 0; i < N; i += 2) base[i].r = uni(0.5, 2); /* fat: o − c, r and w·s alike (L = 1) */
+    for (r = 0; r < RAYS; r++) rays[r] = ray_for(base, N, 1, CYL_CAPS), rays[r].tmax = (T)INFINITY;
+    for (e = LO; e <= HI; e++) {
+        const T s = (T)ldexp(1, e);
+        CYL(batch) b;
+        void *mem;
+        for (i = 0; i < N; i++) {
+            cy[i] = base[i], cy[i].r *= s, cy[i].h *= s;
+            for (k = 0; k < 3; k++) cy[i].c[k] *= s;
+        }
+        mem = build(&b, cy, N);
+        for (r = 0; r < RAYS; r++) {
+            CYL(ray) ray = rays[r];
+            for (k = 0; k < 3; k++) ray.o[k] *= s;
+            ray.tmin *= s;
+            for (o = 0; o < sizeof opts / sizeof opts[0]; o++) agree(&b, &ray, cy, N, opts[o]);
+        }
+        free(mem);
+    }
+}
+
+#ifndef T_DOUBLE
+/* Found by fuzz/fuzz_batch.c against filters whose range was wider than the header's (the
+   scalar call hits; such a filter dropped the cylinder): a cylinder at 2^63 whose w·s squared
+   overflows float while |w|² and r² do not (the float API computed in double), and a flat disk
+   of radius 2^73 and height 2^-55 (float computed in float). The range asks both. */
+static void test_fuzz_range_edges_asked(void)
+{
+    const T big = (T)ldexp(1799, 52), r = (T)ldexp(1281, 63);
+    CYL(cylinder) cy[2] = {{{big, (T)ldexp(1799, -53), big}, {big, big, big}, big, big},
+                           {{(T)ldexp(12593, -15), (T)ldexp(12593, -15), (T)ldexp(12593, -15)},
+                            {(T)ldexp(12593, -15), (T)ldexp(787, -11), (T)ldexp(257, -55)}, r, (T)ldexp(257, -63)}};
+    CYL(ray) far = {{(T)ldexp(7061, -8), (T)ldexp(14135, -9), (T)ldexp(14135, -9)},
+                    {-(T)ldexp(7061, -8), (T)ldexp(30583, 51), (T)ldexp(30583, 55)}, 0, (T)INFINITY};
+    CYL(ray) disk = {{(T)ldexp(771, -12), (T)ldexp(771, -12), (T)ldexp(771, -12)},
+                     {(T)ldexp(6425, -15), (T)ldexp(6425, -15), (T)ldexp(6425, -15)}, 0, (T)0.188232421875};
+    CYL(batch) b;
+    CYL(hit) h;
+    void *mem = build(&b, cy, 2);
+    TEST_ASSERT_EQUAL_INT(CYL_HIT, CYL(intersect)(&far, &cy[0], CYL_OUTWARD, &h));
+    /* the disk is hit where float computes in float (in double the call misses it: agreement holds either way) */
+    TEST_ASSERT_EQUAL_INT(CYL_FLOAT_WIDE ? CYL_MISS : CYL_HIT, CYL(intersect)(&disk, &cy[1], CYL_CAPS | CYL_TRUSTED, &h));
+    agree(&b, &far, cy, 2, CYL_OUTWARD), agree(&b, &far, cy, 1, CYL_OUTWARD);
+    agree(&b, &disk, cy, 2, CYL_CAPS | CYL_TRUSTED);
+    free(mem);
+}
+#endif
+
 #ifdef T_DOUBLE
 /* Found by fuzz/fuzz_batch.c: a block whose every cylinder is outside the filter's range (axes of
    length 1e-200) and which the tube test, underflowing, rejects whole: the flag must still ask. */
@@ -478,10 +602,13 @@ int main(void)
     RUN_TEST(test_the_batch_keeps_its_own_copy);
     RUN_TEST(test_ties_and_range_ends);
     RUN_TEST(test_out_of_range_inputs_agree);
+    RUN_TEST(test_any_proportions_agree);
+    RUN_TEST(test_every_scale_agrees);
     RUN_TEST(test_the_filter_drops_certain_misses);
     RUN_TEST(test_out_of_range_cylinder_always_asked);
 #ifndef T_DOUBLE
     RUN_TEST(test_fuzz_nan_d_kept_through_the_interval);
+    RUN_TEST(test_fuzz_range_edges_asked);
 #endif
 #ifdef T_DOUBLE
     RUN_TEST(test_fuzz_block_of_out_of_range_cylinders);
