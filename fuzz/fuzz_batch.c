@@ -5,6 +5,9 @@
  * the loops of cyl?_intersect and cyl?_occluded over the cylinders give (index, t bits, return
  * value, errors). Any difference aborts.
  *
+ * Built with CYL_NO_DOUBLE (fuzz_batch_float_only: the float API computed in float, as a
+ * firmware builds it) the float API alone.
+ *
  * Input: byte 0 picks the API (bit 0) and the option set (bits 1..3), byte 1 the number of
  * cylinders (0..47), byte 2 how the ray is aimed; then the values, 3 bytes each: a 16-bit
  * integer times 2^(e - 64) for e = byte % 128, or (byte >= 248) one of 0, -0, +-inf, NaN, a huge
@@ -105,7 +108,9 @@ static const unsigned fz_opts[8] = {0u, CYL_CAPS, CYL_CAPS | CYL_NO_TANGENT, CYL
     }
 
 FZ_API(f, float, 1e30, 1e-30)
+#ifndef CYL_NO_DOUBLE
 FZ_API(d, double, 1e200, 1e-200)
+#endif
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -116,7 +121,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 #ifdef CYL_NO_PRECISE
     if (opts & CYL_PRECISE) opts &= ~CYL_PRECISE;
 #endif
+#ifndef CYL_NO_DOUBLE
     if (sel & 1) fz_d(&in, opts, (size_t)(n % 48), aim);
-    else fz_f(&in, opts, (size_t)(n % 48), aim);
+    else
+#endif
+        fz_f(&in, opts, (size_t)(n % 48), aim);
     return 0;
 }

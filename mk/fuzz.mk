@@ -17,8 +17,11 @@ FUZZ_CORPUS_fuzz_isect := fuzz/corpus
 FUZZ_CORPUS_fuzz_grid  := fuzz/corpus_grid
 # v2 only: the batch (v2/cylinder_isect_batch.h) against the scalar loops it stands for.
 FUZZ_CORPUS_fuzz_batch := fuzz/corpus_batch
+# and built float-only (CYL_NO_DOUBLE: the filter and the call both in float, as on a firmware),
+# on the same corpus (fuzz-merge leaves it to fuzz_batch)
+FUZZ_CORPUS_fuzz_batch_float_only := fuzz/corpus_batch
 ifeq ($(V),2)
-FUZZ_HARNESSES += fuzz_batch
+FUZZ_HARNESSES += fuzz_batch fuzz_batch_float_only
 endif
 FUZZ_HDRS     := $(HDR) fuzz/fuzz_check.h fuzz/fuzz_grid.h fuzz/fuzz_ref.h $(if $(filter 2,$(V)),$(V2_DIR)/cylinder_isect_batch.h)
 # The harness runs where it is built: a real FMA makes the library's error-free steps fast.
@@ -62,6 +65,8 @@ $(FUZZ_DIR)/harness.flags: FORCE
 	@$(call write_if_changed,$(FUZZ_CMD))
 $(FUZZ_DIR)/fuzz_%: fuzz/fuzz_%.c $(FUZZ_HDRS) $(FUZZ_REF_OBJ_CLANG) $(FUZZ_DIR)/harness.flags
 	$(FUZZ_CMD) $< -x none $(FUZZ_REF_OBJ_CLANG) $(FUZZ_REF_LIBS) -lm -o $@
+$(FUZZ_DIR)/fuzz_batch_float_only: fuzz/fuzz_batch.c $(FUZZ_HDRS) $(FUZZ_DIR)/harness.flags
+	$(FUZZ_CMD) -DCYL_NO_DOUBLE $< -lm -o $@
 
 .PHONY: fuzz fuzz-build fuzz-seeds fuzz-merge fuzz-cov fuzz-replay fuzz-short
 fuzz-build: $(addprefix $(FUZZ_DIR)/,$(FUZZ_HARNESSES))
@@ -73,7 +78,7 @@ fuzz: fuzz-build
 	@mkdir -p $(FUZZ_DIR)/artifacts
 	@bad=0; for h in $(FUZZ_HARNESSES); do \
 	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect);; fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid);; \
-	              fuzz_batch) c=$(FUZZ_CORPUS_fuzz_batch);; esac; \
+	              fuzz_batch|fuzz_batch_float_only) c=$(FUZZ_CORPUS_fuzz_batch);; esac; \
 	  mkdir -p $(FUZZ_DIR)/work/$$h; \
 	  echo "== $$h: $(FUZZ_SECONDS) s on $$c"; \
 	  if $(FUZZ_DIR)/$$h -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -max_len=512 \
@@ -101,7 +106,7 @@ fuzz-merge: fuzz-build fuzz-seeds
 	@set -e; for h in $(FUZZ_HARNESSES); do \
 	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect); extra=$(FUZZ_DIR)/seeds;; \
 	              fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid); extra=$(FUZZ_DIR)/seeds_grid;; \
-	              fuzz_batch) c=$(FUZZ_CORPUS_fuzz_batch); extra=;; esac; \
+	              fuzz_batch) c=$(FUZZ_CORPUS_fuzz_batch); extra=;; fuzz_batch_float_only) continue;; esac; \
 	  rm -rf $(FUZZ_DIR)/merged/$$h && mkdir -p $(FUZZ_DIR)/merged/$$h $(FUZZ_DIR)/work/$$h $$c; \
 	  $(FUZZ_DIR)/$$h -merge=1 -use_counters=0 -artifact_prefix=$(FUZZ_DIR)/artifacts/merge-$$h- $(FUZZ_DIR)/merged/$$h $$c $$extra $(FUZZ_DIR)/work/$$h >$(FUZZ_DIR)/$$h-merge.log 2>&1 \
 	    || { tail -n 20 $(FUZZ_DIR)/$$h-merge.log; exit 1; }; \
