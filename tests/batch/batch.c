@@ -284,6 +284,38 @@ static void test_out_of_range_inputs_agree(void)
     free(mem);
 }
 
+/* Grazing rays started next to their contact point (|o − c| about r): there the filter's own
+   rounding slack, which grows with |o − c|², is below the tangent band, so the band itself must
+   keep the contacts the scalar call reports (e inside the band) and their neighbours. */
+static void test_contacts_seen_from_close_by(void)
+{
+    enum { N = 12, RAYS = 400 };
+    static const double edge[] = {0.25, 0.45, 0.499, 0.5, 0.501, 0.55, 1.0};
+    static const unsigned opts[] = {0u, CYL_CAPS, CYL_CAPS | CYL_NO_TANGENT};
+    CYL(cylinder) cy[N];
+    CYL(batch) b;
+    void *mem;
+    size_t r, o;
+    int k;
+    rng_state = 99u;
+    scene(cy, N, 10);
+    mem = build(&b, cy, N);
+    for (r = 0; r < RAYS; r++) {
+        const CYL(cylinder) *c = &cy[r % N];
+        double u[3], v[3], an = 0, e = TANG_TOL * edge[(size_t)(rnd() * 7) % 7] * (rnd() < 0.5 ? 1 : -1);
+        double rho = (double)c->r * (1 + e), back = (double)c->r * (rnd() < 0.5 ? 0.05 : 0.5);
+        CYL(ray) ray;
+        frame(c, u, v);
+        for (k = 0; k < 3; k++) an += (double)c->a[k] * (double)c->a[k];
+        an = sqrt(an);
+        for (k = 0; k < 3; k++) /* at distance rho from the axis, in the plane of the center */
+            ray.o[k] = (T)((double)c->c[k] + rho * u[k] - back * v[k]), ray.d[k] = (T)v[k];
+        ray.tmin = 0, ray.tmax = (T)INFINITY;
+        for (o = 0; o < sizeof opts / sizeof opts[0]; o++) agree(&b, &ray, cy, N, opts[o]);
+    }
+    free(mem);
+}
+
 /* 2^e times a value in [1, 2), e uniform in [lo, hi] clamped to [LO, HI] (T's exponents, less
    a margin: every value finite and normal). */
 #ifdef T_DOUBLE
@@ -602,6 +634,7 @@ int main(void)
     RUN_TEST(test_the_batch_keeps_its_own_copy);
     RUN_TEST(test_ties_and_range_ends);
     RUN_TEST(test_out_of_range_inputs_agree);
+    RUN_TEST(test_contacts_seen_from_close_by);
     RUN_TEST(test_any_proportions_agree);
     RUN_TEST(test_every_scale_agrees);
     RUN_TEST(test_the_filter_drops_certain_misses);
