@@ -182,12 +182,12 @@ MUTANTS_V2 = [
 # the scalar loop: each mutant drops or loosens one of the filter's certainties (so that it may
 # reject a cylinder the scalar call hits) or one of the loop's rules. Run by tests/batch/batch.c
 # (float, double; the float API computed in float; AVX2 where this machine has it). Measured and
-# left out, as no test input reaches where they differ: the float-in-float bound factor 36 cut
-# to 2, its h/2 range raised to float's largest, rays beyond the range filtered like the others
-# (the fuzz harness built float in float found a difference for the first and the last, each on
-# a CYL_TRUSTED ray with tmin > tmax only, whose answer is the caller's risk yet the batch's to
-# repeat; none for the second in 9.5 million inputs, none for the last in float computed in
-# double in 13.2 million).
+# left out, as no input found differs within the contract: the float-in-float bound factor 36
+# cut to 2, its h/2 range raised to float's largest, rays beyond the range filtered like the
+# others. The fuzz harness built float in float found differences for the first and the last
+# only on CYL_TRUSTED rays with tmin > tmax, whose answers the contract leaves unspecified; none
+# for the second in 9.5 million inputs, none for the last in float computed in double in 13.2
+# million.
 MUTANTS_BATCH = [
  ("batch: D without its rounding bound", "#define CYL__BDERR (sizeof(CYL__BK) == 8 || !CYL_FLOAT_WIDE ? 36 : 20)",
   "#define CYL__BDERR 0"),

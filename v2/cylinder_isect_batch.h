@@ -23,6 +23,9 @@
    int cylf_batch_any(const cylf_batch *b, const cylf_ray *ray, unsigned opts)
        1 if cylf_occluded(ray, &cyls[k], opts) is 1 for some k, 0 if for none, or the error.
    Every option of the scalar API counts, CYL_PRECISE included: each answer is a scalar call's.
+   CYL_TRUSTED's promises about the ray (o and d finite, d nonzero, tmin <= tmax) are the
+   caller's here as there: where one is broken the answer is unspecified, as the call's is (the
+   cylinders are checked when the batch is built, whatever the options).
    A vector filter first drops the cylinders that certainly give no hit at or before the best t
    found so far, t range included: the infinite tube, the t interval it leaves and the slab
    between the cap planes, each compared with a bound on its rounding and on the scalar call's
