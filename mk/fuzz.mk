@@ -7,7 +7,7 @@
 #   make fuzz-short       each harness for FUZZ_CI_SECONDS (default 35): the step of `make check`
 # Recipe and figures: docs/fuzzing.md.
 FUZZ_SECONDS  ?= 60
-# 2 x 35 s of fuzzing in `make check`, starting from the committed corpora.
+# 35 s per harness in `make check`, starting from the committed corpora.
 FUZZ_CI_SECONDS ?= 35
 DEPS_GOALS_fuzz := fuzz fuzz-build fuzz-seeds fuzz-merge fuzz-cov fuzz-short
 CHECK_TARGETS += fuzz-short
@@ -18,7 +18,7 @@ FUZZ_CORPUS_fuzz_grid  := fuzz/corpus_grid
 # v2 only: the batch (v2/cylinder_isect_batch.h) against the scalar loops it stands for.
 FUZZ_CORPUS_fuzz_batch := fuzz/corpus_batch
 # and built float-only (CYL_NO_DOUBLE: the filter and the call both in float, as on a firmware),
-# on the same corpus (fuzz-merge leaves it to fuzz_batch)
+# on the same corpus (fuzz-merge merges what it found into fuzz_batch's, by fuzz_batch's coverage)
 FUZZ_CORPUS_fuzz_batch_float_only := fuzz/corpus_batch
 ifeq ($(V),2)
 FUZZ_HARNESSES += fuzz_batch fuzz_batch_float_only
@@ -78,7 +78,7 @@ fuzz: fuzz-build
 	@mkdir -p $(FUZZ_DIR)/artifacts
 	@bad=0; for h in $(FUZZ_HARNESSES); do \
 	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect);; fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid);; \
-	              fuzz_batch|fuzz_batch_float_only) c=$(FUZZ_CORPUS_fuzz_batch);; esac; \
+	              fuzz_batch) c=$(FUZZ_CORPUS_fuzz_batch);; fuzz_batch_float_only) c=$(FUZZ_CORPUS_fuzz_batch_float_only);; esac; \
 	  mkdir -p $(FUZZ_DIR)/work/$$h; \
 	  echo "== $$h: $(FUZZ_SECONDS) s on $$c"; \
 	  if $(FUZZ_DIR)/$$h -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -max_len=512 \
@@ -106,8 +106,9 @@ fuzz-merge: fuzz-build fuzz-seeds
 	@set -e; for h in $(FUZZ_HARNESSES); do \
 	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect); extra=$(FUZZ_DIR)/seeds;; \
 	              fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid); extra=$(FUZZ_DIR)/seeds_grid;; \
-	              fuzz_batch) c=$(FUZZ_CORPUS_fuzz_batch); extra=;; fuzz_batch_float_only) continue;; esac; \
-	  rm -rf $(FUZZ_DIR)/merged/$$h && mkdir -p $(FUZZ_DIR)/merged/$$h $(FUZZ_DIR)/work/$$h $$c; \
+	              fuzz_batch) c=$(FUZZ_CORPUS_fuzz_batch); extra=$(FUZZ_DIR)/work/fuzz_batch_float_only;; \
+	              fuzz_batch_float_only) continue;; esac; \
+	  rm -rf $(FUZZ_DIR)/merged/$$h && mkdir -p $(FUZZ_DIR)/merged/$$h $(FUZZ_DIR)/work/$$h $$c $$extra; \
 	  $(FUZZ_DIR)/$$h -merge=1 -use_counters=0 -artifact_prefix=$(FUZZ_DIR)/artifacts/merge-$$h- $(FUZZ_DIR)/merged/$$h $$c $$extra $(FUZZ_DIR)/work/$$h >$(FUZZ_DIR)/$$h-merge.log 2>&1 \
 	    || { tail -n 20 $(FUZZ_DIR)/$$h-merge.log; exit 1; }; \
 	  rm -f $$c/* && cp $(FUZZ_DIR)/merged/$$h/* $$c/; \
