@@ -193,7 +193,7 @@ MUTANTS_BATCH = [
   "#define CYL__BDERR 0"),
  ("batch: D without its bound where filter and call share a type (double, float in float)",
   "!CYL_FLOAT_WIDE ? 36 : 20)", "!CYL_FLOAT_WIDE ? 0 : 20)"),
- ("batch: no tangent band", "eD = f.D + (CYL__BK)CYL__BTANG * CYL__BLOAD(p + 6 * CYL__BW) * f.A +", "eD = f.D +"),
+ ("batch: no tangent band", "eD = f.D + (CYL__BK)CYL__BTANG * f.r2 * f.A +", "eD = f.D +"),
  ("batch: float range 2^99", "4294967296.0, 65536.0)", "1e30, 1e30)"),
  ("batch: double range 2^664", "CYL__BLIM(1.2676506002282294e+30,", "CYL__BLIM(1e200,"),
  ("batch: no lower limit on r", "int in = r >= CYL__BLIM_R && ", "int in = "),

@@ -220,18 +220,19 @@ CYL__ALWAYS unsigned CYL__BP(bits)(const CYL__BP(m) *mp)
 typedef struct CYL__BP(q) { CYL__BK o[3], d[3], nd, dd, tmin, tmax; int kd; } CYL__BP(q);
 
 /* What the filter forms first, from the block's lanes at p and the ray. */
-typedef struct CYL__BP(tube) { CYL__BP(v) a[3], w[3], s[3], A, P, S, ad, D; } CYL__BP(tube);
+typedef struct CYL__BP(tube) { CYL__BP(v) a[3], w[3], s[3], r2, A, P, S, ad, D; } CYL__BP(tube);
 CYL__ALWAYS void CYL__BP(tube_of)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BP(tube) *f)
 {
-    const CYL__BP(v) zero = {0}, r2 = CYL__BLOAD(p + 6 * CYL__BW);
+    const CYL__BP(v) zero = {0};
     int i;
+    f->r2 = CYL__BLOAD(p + 6 * CYL__BW);
     for (i = 0; i < 3; i++) f->a[i] = CYL__BLOAD(p + (3 + i) * CYL__BW), f->w[i] = q->o[i] - CYL__BLOAD(p + i * CYL__BW);
     f->s[0] = CYL__BFMA(f->a[1], zero + q->d[2], -(f->a[2] * q->d[1])), f->s[1] = CYL__BFMA(f->a[2], zero + q->d[0], -(f->a[0] * q->d[2]));
     f->s[2] = CYL__BFMA(f->a[0], zero + q->d[1], -(f->a[1] * q->d[0]));
     f->A = CYL__BFMA(f->s[0], f->s[0], CYL__BFMA(f->s[1], f->s[1], f->s[2] * f->s[2]));
     f->P = CYL__BFMA(f->w[0], f->s[0], CYL__BFMA(f->w[1], f->s[1], f->w[2] * f->s[2]));
-    f->S = CYL__BFMA(f->w[0], f->w[0], CYL__BFMA(f->w[1], f->w[1], f->w[2] * f->w[2])) + r2; /* |w|² + r² */
-    f->ad = CYL__BLOAD(p + 7 * CYL__BW) * q->dd, f->D = CYL__BFMA(r2, f->A, -(f->P * f->P));
+    f->S = CYL__BFMA(f->w[0], f->w[0], CYL__BFMA(f->w[1], f->w[1], f->w[2] * f->w[2])) + f->r2; /* |w|² + r² */
+    f->ad = CYL__BLOAD(p + 7 * CYL__BW) * q->dd, f->D = CYL__BFMA(f->r2, f->A, -(f->P * f->P));
 }
 
 /* The filter (the contract's "how"): of lanes p[j], those a scalar call might hit at a t in
@@ -252,7 +253,7 @@ CYL__ALWAYS void CYL__BP(filter)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BK 
     /* the tube: kept unless D is below the band by more than its rounding and the scalar call's
        (each at most 16u|a|²|d|²(|w|² + r²), the standard model through s, w, A, P and r², less
        where the call works in double: CYL__BDERR) */
-    eD = f.D + (CYL__BK)CYL__BTANG * CYL__BLOAD(p + 6 * CYL__BW) * f.A + (CYL__BK)CYL__BDERR * u * f.ad * f.S; /* D's most */
+    eD = f.D + (CYL__BK)CYL__BTANG * f.r2 * f.A + (CYL__BK)CYL__BDERR * u * f.ad * f.S; /* D's most */
     keep = CYL__BNOT(eD < 0);
     *out = keep; /* r² = +inf (a cylinder out of range) keeps its lane: D, S and the bounds infinite or NaN */
     if (!CYL__BP(bits)(out)) return; /* the usual block: no more */
@@ -274,8 +275,7 @@ CYL__ALWAYS void CYL__BP(filter)(const CYL__BK *p, const CYL__BP(q) *q, CYL__BK 
     keep &= CYL__BNOT(lo > hi);
     /* the slab: z0 + tζ at lo and hi, beyond one cap plane by more than twice N9's bound */
     T = CYL__BMAX(CYL__BABS(lo), CYL__BABS(hi));
-    e = 2 * (64 * u * (na * nw + Ha + T * na * q->nd)
-             + 2 * u * T * CYL__BABS(ze)) + Ha;
+    e = 2 * (64 * u * (na * nw + Ha + T * na * q->nd) + 2 * u * T * CYL__BABS(ze)) + Ha;
     zl = z0 + lo * ze, zh = z0 + hi * ze;
     keep &= CYL__BNOT(((zl > e) & (zh > e)) | ((zl < -e) & (zh < -e)));
     *out = keep;

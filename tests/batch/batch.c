@@ -180,6 +180,13 @@ static void agree(const CYL(batch) *b, const CYL(ray) *ray, const CYL(cylinder) 
     TEST_ASSERT_EQUAL_INT_MESSAGE(loop_any(ray, cy, n, opts), CYL(batch_any)(b, ray, opts), "any");
 }
 
+/* agree() for each of the k option sets opts[]. */
+static void agree_each(const CYL(batch) *b, const CYL(ray) *ray, const CYL(cylinder) *cy, size_t n, const unsigned *opts, size_t k)
+{
+    size_t o;
+    for (o = 0; o < k; o++) agree(b, ray, cy, n, opts[o]);
+}
+
 static const unsigned opt_sets[] = {0u, CYL_CAPS, CYL_CAPS | CYL_NO_TANGENT, CYL_NO_NORMAL | CYL_NO_ERRBOUND,
                                     CYL_CAPS | CYL_OUTWARD | CYL_TRUSTED,
 #ifndef CYL_NO_PRECISE
@@ -295,7 +302,7 @@ static void test_contacts_seen_from_close_by(void)
     CYL(cylinder) cy[N];
     CYL(batch) b;
     void *mem;
-    size_t r, o;
+    size_t r;
     int k;
     rng_state = 99u;
     scene(cy, N, 10);
@@ -309,7 +316,7 @@ static void test_contacts_seen_from_close_by(void)
         for (k = 0; k < 3; k++) /* at distance rho from the axis, in the plane of the center */
             ray.o[k] = (T)((double)c->c[k] + rho * u[k] - back * v[k]), ray.d[k] = (T)v[k];
         ray.tmin = 0, ray.tmax = (T)INFINITY;
-        for (o = 0; o < sizeof opts / sizeof opts[0]; o++) agree(&b, &ray, cy, N, opts[o]);
+        agree_each(&b, &ray, cy, N, opts, sizeof opts / sizeof opts[0]);
     }
     free(mem);
 }
@@ -340,7 +347,7 @@ static void test_any_proportions_agree(void)
     enum { TRIALS = 1500, NMAX = 24 };
     static const unsigned opts[] = {0u, CYL_CAPS, CYL_CAPS | CYL_TRUSTED};
     CYL(cylinder) cy[NMAX];
-    size_t trial, i, o;
+    size_t trial, i;
     int k;
     rng_state = 20261207u;
     for (trial = 0; trial < TRIALS; trial++) {
@@ -372,7 +379,7 @@ static void test_any_proportions_agree(void)
         if (eq(ray.d[0], 0) && eq(ray.d[1], 0) && eq(ray.d[2], 0)) ray.d[0] = 1;
         ray.tmin = 0, ray.tmax = rnd() < 0.3 ? mag(-30, 30) : (T)INFINITY;
         mem = build(&b, cy, n);
-        for (o = 0; o < sizeof opts / sizeof opts[0]; o++) agree(&b, &ray, cy, n, opts[o]);
+        agree_each(&b, &ray, cy, n, opts, sizeof opts / sizeof opts[0]);
         free(mem);
     }
 }
@@ -388,7 +395,7 @@ static void test_every_scale_agrees(void)
     static const unsigned opts[] = {0u, CYL_CAPS};
     CYL(cylinder) base[N], cy[N];
     CYL(ray) rays[RAYS];
-    size_t i, r, o;
+    size_t i, r;
     int e, k;
     rng_state = 640u;
     scene(base, N, 1);
@@ -407,7 +414,7 @@ static void test_every_scale_agrees(void)
             CYL(ray) ray = rays[r];
             for (k = 0; k < 3; k++) ray.o[k] *= s;
             ray.tmin *= s;
-            for (o = 0; o < sizeof opts / sizeof opts[0]; o++) agree(&b, &ray, cy, N, opts[o]);
+            agree_each(&b, &ray, cy, N, opts, sizeof opts / sizeof opts[0]);
         }
         free(mem);
     }
