@@ -194,8 +194,18 @@ deps:
 
 # ---------------------------------------------------------------- the two tiers
 .PHONY: test check check-builds
-test: deps unity $(TEST_PREREQS) $(RUNNERS)
-	@bash scripts/run-tests.sh $(RESULTS) $(RUNNERS)
+# Each runner runs as soon as it is built, beside the builds still going (make -j): its output
+# and exit code go to $(RESULTS)/<its path, / as _>.txt and .rc, and run-tests.sh --report sums
+# them in RUNNERS' order. Every make test runs every runner (FORCE: what one reads, the fuzz
+# corpus for one, may have changed since).
+run_out = $(RESULTS)/$(subst /,_,$(1)).txt
+define RUN_RULE
+$(call run_out,$(1)): $(1) FORCE
+	@mkdir -p $$(@D); rm -f $$@.rc; $(1) >$$@ 2>&1; echo $$$$? >$$@.rc
+endef
+$(foreach r,$(RUNNERS),$(eval $(call RUN_RULE,$(r))))
+test: deps unity $(TEST_PREREQS) $(foreach r,$(RUNNERS),$(call run_out,$(r)))
+	@bash scripts/run-tests.sh --report $(RESULTS) $(RUNNERS)
 
 check-builds: deps unity $(CHECK_PREREQS)
 
