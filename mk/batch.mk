@@ -26,19 +26,22 @@ $(BUILD)/$(1)/$(2)_float $(BUILD)/$(1)/$(2)_double: $(BUILD)/$(1)/$(2)_%: tests/
 RUNNERS += $(foreach p,$(or $(4),float double),$(BUILD)/$(1)/$(2)_$(p))
 endef
 $(foreach c,$(CONFIGS),$(eval $(call BATCH_RUNNER,$(c),batch)))
-$(eval $(call BATCH_RUNNER,gcc-O2,batch_portable,-DCYL_BATCH_PORTABLE))
+# The forms below change the batch's arithmetic (vectors, working type), not how calls inline:
+# their entry points out of line (CYL_OUT_OF_LINE, as the root Makefile's configuration runners),
+# which halves their compiling; gcc-O2's and clang-O2's batch runners keep every call site folding.
+$(eval $(call BATCH_RUNNER,gcc-O2,batch_portable,-DCYL_BATCH_PORTABLE $(CYL_OUT_OF_LINE)))
 # The float API's filter and call both in float (CYL_FLOAT_WIDE 0: its own bound factor and range),
 # and as a float-only firmware builds it (CYL_NO_DOUBLE, no vectors, for size).
-$(eval $(call BATCH_RUNNER,gcc-O2,batch_narrow,-DCYL_FLOAT_WIDE=0,float))
+$(eval $(call BATCH_RUNNER,gcc-O2,batch_narrow,-DCYL_FLOAT_WIDE=0 $(CYL_OUT_OF_LINE),float))
 $(eval $(call BATCH_RUNNER,gcc-O2,batch_float_only,-DCYL_NO_DOUBLE -DCYL_BATCH_PORTABLE -Os,float))
 ifeq ($(shell uname -m),x86_64)
-$(eval $(call BATCH_RUNNER,gcc-O2,batch_avx2,-march=x86-64-v3))
-$(eval $(call BATCH_RUNNER,clang-O2,batch_avx2,-march=x86-64-v3))
-$(eval $(call BATCH_RUNNER,gcc-O2,batch_avx2_narrow,-march=x86-64-v3 -DCYL_FLOAT_WIDE=0,float))
+$(eval $(call BATCH_RUNNER,gcc-O2,batch_avx2,-march=x86-64-v3 $(CYL_OUT_OF_LINE)))
+$(eval $(call BATCH_RUNNER,clang-O2,batch_avx2,-march=x86-64-v3 $(CYL_OUT_OF_LINE)))
+$(eval $(call BATCH_RUNNER,gcc-O2,batch_avx2_narrow,-march=x86-64-v3 -DCYL_FLOAT_WIDE=0 $(CYL_OUT_OF_LINE),float))
 endif
 ifeq ($(HOST_AVX512),1)
-$(eval $(call BATCH_RUNNER,gcc-O2,batch_avx512,-march=x86-64-v4))
-$(eval $(call BATCH_RUNNER,gcc-O2,batch_avx512_zmm,-march=x86-64-v4 -DCYL_BATCH_VECTOR_BYTES=64))
+$(eval $(call BATCH_RUNNER,gcc-O2,batch_avx512,-march=x86-64-v4 $(CYL_OUT_OF_LINE)))
+$(eval $(call BATCH_RUNNER,gcc-O2,batch_avx512_zmm,-march=x86-64-v4 -DCYL_BATCH_VECTOR_BYTES=64 $(CYL_OUT_OF_LINE)))
 endif
 endif
 
