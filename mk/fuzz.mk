@@ -1,5 +1,6 @@
 # Fuzzing (issue 4): libFuzzer harnesses, the corpus replay inside `make test`, coverage.
-#   make fuzz             run each harness for FUZZ_SECONDS (default 60); fails on any finding
+#   make fuzz             run each harness for FUZZ_SECONDS (default 60), FUZZ_JOBS at once (default:
+#                         one per core); fails on any finding
 #   make fuzz-seeds       regenerate the seed inputs into build/fuzz/seeds
 #   make fuzz-merge       minimise seeds + fuzz/corpus* + what `make fuzz` found into fuzz/corpus*
 #   make fuzz-cov         line and branch coverage of cylinder_isect.h reached by the corpus
@@ -9,6 +10,8 @@
 FUZZ_SECONDS  ?= 60
 # 35 s per harness in `make check`, starting from the committed corpora.
 FUZZ_CI_SECONDS ?= 35
+# Harnesses running at once (each one is single-threaded): every core, so that each has one.
+FUZZ_JOBS ?= $(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
 DEPS_GOALS_fuzz := fuzz fuzz-build fuzz-seeds fuzz-merge fuzz-cov fuzz-short
 CHECK_TARGETS += fuzz-short
 FUZZ_DIR      := $(BUILD)/fuzz
@@ -76,14 +79,19 @@ fuzz-build: $(addprefix $(FUZZ_DIR)/,$(FUZZ_HARNESSES))
 # other harnesses still run, and make fails at the end.
 fuzz: fuzz-build
 	@mkdir -p $(FUZZ_DIR)/artifacts
-	@bad=0; for h in $(FUZZ_HARNESSES); do \
+	@one() { h=$$1; c=$$2; rm -f $(FUZZ_DIR)/$$h.rc; mkdir -p $(FUZZ_DIR)/work/$$h; \
+	  $(FUZZ_DIR)/$$h -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -max_len=512 \
+	    -artifact_prefix=$(FUZZ_DIR)/artifacts/$$h- $(FUZZ_DIR)/work/$$h $$c >$(FUZZ_DIR)/$$h.log 2>&1; \
+	  echo $$? >$(FUZZ_DIR)/$$h.rc; }; \
+	for h in $(FUZZ_HARNESSES); do \
 	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect);; fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid);; \
 	              fuzz_batch) c=$(FUZZ_CORPUS_fuzz_batch);; fuzz_batch_float_only) c=$(FUZZ_CORPUS_fuzz_batch_float_only);; esac; \
-	  mkdir -p $(FUZZ_DIR)/work/$$h; \
-	  echo "== $$h: $(FUZZ_SECONDS) s on $$c"; \
-	  if $(FUZZ_DIR)/$$h -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -max_len=512 \
-	    -artifact_prefix=$(FUZZ_DIR)/artifacts/$$h- $(FUZZ_DIR)/work/$$h $$c >$(FUZZ_DIR)/$$h.log 2>&1; then \
-	    grep -E 'stat::number_of_executed_units|stat::average_exec_per_sec' $(FUZZ_DIR)/$$h.log; \
+	  while [ "$$(jobs -rp | wc -l)" -ge $(FUZZ_JOBS) ]; do wait -n; done; \
+	  echo "== $$h: $(FUZZ_SECONDS) s on $$c"; one $$h $$c & \
+	done; wait; \
+	bad=0; for h in $(FUZZ_HARNESSES); do \
+	  if [ "$$(cat $(FUZZ_DIR)/$$h.rc 2>/dev/null)" = 0 ]; then \
+	    echo "$$h:"; grep -E 'stat::number_of_executed_units|stat::average_exec_per_sec' $(FUZZ_DIR)/$$h.log; \
 	  else \
 	    grep -m1 -B1 'ERROR: libFuzzer' $(FUZZ_DIR)/$$h.log | head -n 1 | cut -c1-400; \
 	    grep 'Test unit written' $(FUZZ_DIR)/$$h.log; \
