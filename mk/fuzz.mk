@@ -83,9 +83,7 @@ fuzz: fuzz-build
 	  $(FUZZ_DIR)/$$h -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -max_len=512 \
 	    -artifact_prefix=$(FUZZ_DIR)/artifacts/$$h- $(FUZZ_DIR)/work/$$h $$c >$(FUZZ_DIR)/$$h.log 2>&1; \
 	  echo $$? >$(FUZZ_DIR)/$$h.rc; }; \
-	for h in $(FUZZ_HARNESSES); do \
-	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect);; fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid);; \
-	              fuzz_batch) c=$(FUZZ_CORPUS_fuzz_batch);; fuzz_batch_float_only) c=$(FUZZ_CORPUS_fuzz_batch_float_only);; esac; \
+	for hc in $(foreach h,$(FUZZ_HARNESSES),$(h):$(FUZZ_CORPUS_$(h))); do h=$${hc%%:*}; c=$${hc#*:}; \
 	  while [ "$$(jobs -rp | wc -l)" -ge $(FUZZ_JOBS) ]; do wait -n; done; \
 	  echo "== $$h: $(FUZZ_SECONDS) s on $$c"; one $$h $$c & \
 	done; wait; \

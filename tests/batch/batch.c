@@ -193,7 +193,8 @@ static const unsigned opt_sets[] = {0u, CYL_CAPS, CYL_CAPS | CYL_NO_TANGENT, CYL
                                     CYL_CAPS | CYL_PRECISE
 #endif
 };
-#define N_OPTS (sizeof opt_sets / sizeof opt_sets[0])
+#define COUNT(a) (sizeof (a) / sizeof (a)[0])
+#define N_OPTS COUNT(opt_sets)
 
 /* ------------------------------------------------------------------ tests */
 static void test_random_scenes_agree_with_the_scalar_loop(void)
@@ -316,7 +317,7 @@ static void test_contacts_seen_from_close_by(void)
         for (k = 0; k < 3; k++) /* at distance rho from the axis, in the plane of the center */
             ray.o[k] = (T)((double)c->c[k] + rho * u[k] - back * v[k]), ray.d[k] = (T)v[k];
         ray.tmin = 0, ray.tmax = (T)INFINITY;
-        agree_each(&b, &ray, cy, N, opts, sizeof opts / sizeof opts[0]);
+        agree_each(&b, &ray, cy, N, opts, COUNT(opts));
     }
     free(mem);
 }
@@ -379,7 +380,7 @@ static void test_any_proportions_agree(void)
         if (eq(ray.d[0], 0) && eq(ray.d[1], 0) && eq(ray.d[2], 0)) ray.d[0] = 1;
         ray.tmin = 0, ray.tmax = rnd() < 0.3 ? mag(-30, 30) : (T)INFINITY;
         mem = build(&b, cy, n);
-        agree_each(&b, &ray, cy, n, opts, sizeof opts / sizeof opts[0]);
+        agree_each(&b, &ray, cy, n, opts, COUNT(opts));
         free(mem);
     }
 }
@@ -393,10 +394,11 @@ static void test_any_proportions_agree(void)
    which the scales between repeat, and the sweep took most of their time (7.7 s under ASan). */
 static void test_every_scale_agrees(void)
 {
+    enum { N = 16, RAYS = 12 };
 #ifdef __OPTIMIZE__
-    enum { N = 16, RAYS = 12, STEP = 1 };
+    const int step = 1;
 #else
-    enum { N = 16, RAYS = 12, STEP = 5 };
+    const int step = 5;
 #endif
     static const unsigned opts[] = {0u, CYL_CAPS};
     CYL(cylinder) base[N], cy[N];
@@ -407,7 +409,7 @@ static void test_every_scale_agrees(void)
     scene(base, N, 1);
     for (i = 0; i < N; i += 2) base[i].r = uni(0.5, 2); /* fat: o − c, r and w·s alike (L = 1) */
     for (r = 0; r < RAYS; r++) rays[r] = ray_for(base, N, 1, CYL_CAPS), rays[r].tmax = (T)INFINITY;
-    for (e = LO; e <= HI; e += STEP) {
+    for (e = LO; e <= HI; e += step) {
         const T s = (T)ldexp(1, e);
         CYL(batch) b;
         void *mem;
@@ -420,7 +422,7 @@ static void test_every_scale_agrees(void)
             CYL(ray) ray = rays[r];
             for (k = 0; k < 3; k++) ray.o[k] *= s;
             ray.tmin *= s;
-            agree_each(&b, &ray, cy, N, opts, sizeof opts / sizeof opts[0]);
+            agree_each(&b, &ray, cy, N, opts, COUNT(opts));
         }
         free(mem);
     }
