@@ -106,6 +106,8 @@ static int cost_last_rc;
               alt##P##_endpoint_solve(&R[i], &C[i], &h[0]), (double)h[0].t)                  \
     COST_SITES_OF(P, plain, COST_PLAIN)                                                      \
     COST_SITES_OF(P, default, COST_DEFAULT)                                                  \
+    COST_SITES_OF(P, bound, CYL_CAPS | CYL_NO_NORMAL)                                        \
+    COST_SITES_OF(P, normal, CYL_CAPS | CYL_NO_ERRBOUND)                                     \
     COST_SITES_OF(P, precise, COST_PREC_OPTS)                                                \
     COST_SITES_OF(P, open, 0u)                                                               \
     COST_SITES_OF(P, outward, CYL_OUTWARD)
@@ -140,6 +142,8 @@ typedef struct cost_loop {
     {PREC, "endpoint", IN_EP, 0, endpoint_##P},                                              \
     COST_ROWS_OF(P, PREC, plain, 0),                                                         \
     COST_ROWS_OF(P, PREC, default, 0),                                                       \
+    COST_ROWS_OF(P, PREC, bound, 0),                                                         \
+    COST_ROWS_OF(P, PREC, normal, 0),                                                        \
     COST_ROWS_OF(P, PREC, precise, 1),                                                       \
     COST_ROWS_OF(P, PREC, open, 0),                                                          \
     COST_ROWS_OF(P, PREC, outward, 0)

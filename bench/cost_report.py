@@ -29,6 +29,8 @@ PRECS = [("24", "float"), ("53", "double")]
 ROWS = [
     ("end-point routine (pa, pb, ra)", "endpoint"),
     ("plain: CAPS\\|NO_ERRBOUND\\|NO_NORMAL", "intersect:plain"),
+    ("plain and t_err: CAPS\\|NO_NORMAL", "intersect:bound"),
+    ("plain and normal: CAPS\\|NO_ERRBOUND", "intersect:normal"),
     ("default: CAPS", "intersect:default"),
     ("precise: CAPS\\|PRECISE", "intersect:precise"),
 ]
@@ -39,9 +41,11 @@ LIMITS = [
     ("default", "intersect:default", 2.0, 28),
     ("precise", "intersect:precise", 3.0, 29),
 ]
-SITES = ["plain", "default", "precise", "open", "outward"]
+SITES = ["plain", "bound", "normal", "default", "precise", "open", "outward"]
 SITE_OPTS = {
     "plain": "CAPS\\|NO_ERRBOUND\\|NO_NORMAL",
+    "bound": "CAPS\\|NO_NORMAL",
+    "normal": "CAPS\\|NO_ERRBOUND",
     "default": "CAPS",
     "precise": "CAPS\\|PRECISE",
     "open": "0 (open tube)",
@@ -228,6 +232,36 @@ def limits(loaded, held_txt):
     return lines + [""], lost
 
 
+def layers(loaded):
+    """What each layer adds to v2's plain intersect, per API and -march setting, beside what
+    the default limit leaves over plain (its end-point multiple less plain)."""
+    lim = next(limit for label, _, limit, _ in LIMITS if label == "default")
+    keys = [(m, flags, prec, pn) for m, flags in MARCHES if ("v2", m) in loaded for prec, pn in PRECS]
+    if not keys:
+        return []
+    lines = ["### What each part adds to v2's plain intersect", "",
+             "Instructions per call, from the rows above: each option set's count less plain's "
+             f"(CAPS\\|NO_ERRBOUND\\|NO_NORMAL). The last row is what the default limit "
+             f"({lim:.1f}x the end-point routine) leaves for the t_err bound and the normal.", "",
+             "| part | " + " | ".join(f"{pn}, {flags}" for _, flags, _, pn in keys) + " |",
+             "|---|" + "---:|" * len(keys)]
+    parts = [("t_err bound (CAPS\\|NO_NORMAL)", "intersect:bound", None),
+             ("normal (CAPS\\|NO_ERRBOUND)", "intersect:normal", None),
+             ("both: the default (CAPS)", "intersect:default", None),
+             ("CYL_PRECISE over the default", "intersect:precise", "intersect:default"),
+             (f"left by the default limit ({lim:.1f}x)", "endpoint", None)]
+    for label, name, base in parts:
+        row = f"| {label} |"
+        for m, _, prec, _ in keys:
+            vals = loaded[("v2", m)][0]
+            v, b = vals.get((prec, name)), vals.get((prec, base or "intersect:plain"))
+            if name == "endpoint" and isinstance(v, float):
+                v = lim * v
+            row += f" {v - b:+.1f} |" if isinstance(v, float) and isinstance(b, float) else " n/a |"
+        lines.append(row)
+    return lines + [""]
+
+
 def cmd_insn(a):
     loaded = {}
     for p in a.files:
@@ -236,7 +270,7 @@ def cmd_insn(a):
     lines = report(a, loaded, "Instructions per call under callgrind",
                    "## Instructions per call: v1 and v2 against the end-point routine")
     lim, lost = limits(loaded, a.held) if ("v2", "base") in loaded else ([], [])
-    write(a, lines + lim)
+    write(a, lines + lim + layers(loaded))
     with open(a.out, "a") as f:
         f.write("\n".join(every_site(a, loaded)))
     if lost:

@@ -2,7 +2,8 @@
 # against the end-point routine, in a program that uses the library as a renderer does:
 # bench/cost.c, built as a user builds it (gcc -std=c99 -O2, then -O2 -march=x86-64-v3).
 #   make cost        callgrind counts: one table per -march setting, then v2's cost limits (issues
-#                    28, 29) met or not, also in build/cost/cost.md; fails when a limit that
+#                    28, 29) met or not and what each part (t_err bound, normal, CYL_PRECISE) adds
+#                    to plain, also in build/cost/cost.md; fails when a limit that
 #                    bench/cost-held.txt lists as met is no longer met
 #   make cost-time   time per call and its ratio, median of COST_RUNS runs (build/cost/cost-time.md)
 #   make cost-mix    make cost's counts by kind of instruction (move, convert, arith, decide, ...)
