@@ -233,32 +233,40 @@ def limits(loaded, held_txt):
 
 
 def layers(loaded):
-    """What each layer adds to v2's plain intersect, per API and -march setting, beside what
-    the default limit leaves over plain (its end-point multiple less plain)."""
+    """What each part adds to v2's plain intersect, per API and -march setting, and what the
+    default limit leaves over plain (its multiple of the end-point routine, less plain)."""
     lim = next(limit for label, _, limit, _ in LIMITS if label == "default")
     keys = [(m, flags, prec, pn) for m, flags in MARCHES if ("v2", m) in loaded for prec, pn in PRECS]
     if not keys:
         return []
     lines = ["### What each part adds to v2's plain intersect", "",
              "Instructions per call, from the rows above: each option set's count less plain's "
-             f"(CAPS\\|NO_ERRBOUND\\|NO_NORMAL). The last row is what the default limit "
-             f"({lim:.1f}x the end-point routine) leaves for the t_err bound and the normal.", "",
+             "(CAPS\\|NO_ERRBOUND\\|NO_NORMAL), CYL_PRECISE's less the default's. The last row is "
+             f"what the default limit ({lim:.1f}x the end-point routine) leaves for the t_err bound "
+             "and the normal.", "",
              "| part | " + " | ".join(f"{pn}, {flags}" for _, flags, _, pn in keys) + " |",
              "|---|" + "---:|" * len(keys)]
-    parts = [("t_err bound (CAPS\\|NO_NORMAL)", "intersect:bound", None),
-             ("normal (CAPS\\|NO_ERRBOUND)", "intersect:normal", None),
-             ("both: the default (CAPS)", "intersect:default", None),
-             ("CYL_PRECISE over the default", "intersect:precise", "intersect:default"),
-             (f"left by the default limit ({lim:.1f}x)", "endpoint", None)]
-    for label, name, base in parts:
-        row = f"| {label} |"
-        for m, _, prec, _ in keys:
-            vals = loaded[("v2", m)][0]
-            v, b = vals.get((prec, name)), vals.get((prec, base or "intersect:plain"))
-            if name == "endpoint" and isinstance(v, float):
-                v = lim * v
-            row += f" {v - b:+.1f} |" if isinstance(v, float) and isinstance(b, float) else " n/a |"
-        lines.append(row)
+
+    def row(label, diff):
+        cells = [diff(loaded[("v2", m)][0], prec) for m, _, prec, _ in keys]
+        return f"| {label} |" + "".join(f" {c:+.1f} |" if c is not None else " n/a |" for c in cells)
+
+    def less(name, base):
+        return lambda vals, prec: sub(vals.get((prec, name)), vals.get((prec, base)))
+
+    def sub(v, b):
+        return v - b if isinstance(v, float) and isinstance(b, float) else None
+
+    def left(vals, prec):
+        ep = vals.get((prec, "endpoint"))
+        return sub(lim * ep, vals.get((prec, plain))) if isinstance(ep, float) else None
+
+    plain = "intersect:plain"
+    lines += [row("t_err bound (CAPS\\|NO_NORMAL)", less("intersect:bound", plain)),
+              row("normal (CAPS\\|NO_ERRBOUND)", less("intersect:normal", plain)),
+              row("both: the default (CAPS)", less("intersect:default", plain)),
+              row("CYL_PRECISE over the default", less("intersect:precise", "intersect:default")),
+              row(f"left by the default limit ({lim:.1f}x)", left)]
     return lines + [""]
 
 

@@ -26,6 +26,12 @@ FUZZ_CORPUS_fuzz_batch_float_only := fuzz/corpus_batch
 ifeq ($(V),2)
 FUZZ_HARNESSES += fuzz_batch fuzz_batch_float_only
 endif
+# What fuzz-merge adds to each corpus besides what make fuzz found: the seeds, and for fuzz_batch
+# what fuzz_batch_float_only found (which merges into it, not on its own).
+FUZZ_SEEDS_fuzz_isect := $(FUZZ_DIR)/seeds
+FUZZ_SEEDS_fuzz_grid  := $(FUZZ_DIR)/seeds_grid
+FUZZ_SEEDS_fuzz_batch := $(FUZZ_DIR)/work/fuzz_batch_float_only
+FUZZ_MERGED := $(filter-out fuzz_batch_float_only,$(FUZZ_HARNESSES))
 FUZZ_HDRS     := $(HDR) fuzz/fuzz_check.h fuzz/fuzz_grid.h fuzz/fuzz_ref.h $(if $(filter 2,$(V)),$(V2_DIR)/cylinder_isect_batch.h)
 # The harness runs where it is built: a real FMA makes the library's error-free steps fast.
 # The gcc replay is built without it, so libm's fma path is checked too.
@@ -109,12 +115,9 @@ fuzz-seeds: $(FUZZ_DIR)/gen_seeds
 
 # Keep only inputs that add coverage (libFuzzer -merge=1), then replace the committed corpora.
 fuzz-merge: fuzz-build fuzz-seeds
-	@set -e; for h in $(FUZZ_HARNESSES); do \
-	  case $$h in fuzz_isect) c=$(FUZZ_CORPUS_fuzz_isect); extra=$(FUZZ_DIR)/seeds;; \
-	              fuzz_grid) c=$(FUZZ_CORPUS_fuzz_grid); extra=$(FUZZ_DIR)/seeds_grid;; \
-	              fuzz_batch) c=$(FUZZ_CORPUS_fuzz_batch); extra=$(FUZZ_DIR)/work/fuzz_batch_float_only;; \
-	              fuzz_batch_float_only) continue;; esac; \
-	  rm -rf $(FUZZ_DIR)/merged/$$h && mkdir -p $(FUZZ_DIR)/merged/$$h $(FUZZ_DIR)/work/$$h $$c $$extra; \
+	@set -e; for t in $(foreach h,$(FUZZ_MERGED),$(h):$(FUZZ_CORPUS_$(h)):$(FUZZ_SEEDS_$(h))); do \
+	  h=$${t%%:*}; c=$${t#*:}; extra=$${c#*:}; c=$${c%%:*}; \
+	  rm -rf $(FUZZ_DIR)/merged/$$h && mkdir -p $(FUZZ_DIR)/merged/$$h $(FUZZ_DIR)/work/$$h $(FUZZ_DIR)/artifacts $$c $$extra; \
 	  $(FUZZ_DIR)/$$h -merge=1 -use_counters=0 -artifact_prefix=$(FUZZ_DIR)/artifacts/merge-$$h- $(FUZZ_DIR)/merged/$$h $$c $$extra $(FUZZ_DIR)/work/$$h >$(FUZZ_DIR)/$$h-merge.log 2>&1 \
 	    || { tail -n 20 $(FUZZ_DIR)/$$h-merge.log; exit 1; }; \
 	  rm -f $$c/* && cp $(FUZZ_DIR)/merged/$$h/* $$c/; \
