@@ -198,7 +198,7 @@ MUTANTS_BATCH = [
  ("batch: double range 2^664", "CYL__BLIM(1.2676506002282294e+30,", "CYL__BLIM(1e200,"),
  ("batch: no lower limit on r", "int in = r >= CYL__BLIM_R && ", "int in = "),
  ("batch: out-of-range cylinders filtered", "if (!in) v[6] = v[8] = (CYL__BK)CYL__HUGE;", "(void)in;"),
- ("batch: a NaN D's interval finite (finding 62)", "h = CYL__BSEL(eD < zero, zero, eD) * aa;", "h = CYL__BMAX(eD, zero) * aa;"),
+ ("batch: a NaN D's interval finite (finding 63)", "h = CYL__BSEL(eD < zero, zero, eD) * aa;", "h = CYL__BMAX(eD, zero) * aa;"),
  ("batch: interval bounded where A <= its error", "er = CYL__BSEL(Am > 0, er + h, zero + (CYL__BK)CYL__HUGE);", "er = er + h;"),
  ("batch: slab without its bound", "zl = z0 + lo * ze, zh = z0 + hi * ze;", "e = Ha, zl = z0 + lo * ze, zh = z0 + hi * ze;"),
  ("batch: ties to the last index", "== CYL_HIT && (!got || hit.t < bt))", "== CYL_HIT && (!got || hit.t <= bt))"),
