@@ -59,7 +59,8 @@
    CODE: the filter is written once over a vector: GCC vector extensions where the compiler has
    them (gcc, clang) for x86 at the width of the instruction set the build targets (SSE2,
    AVX2; with AVX-512, 256 bits and its 32 registers unless CYL_BATCH_VECTOR_BYTES is 64;
-   square roots, fused multiply-adds and masks by its intrinsics), else (NEON not measured
+   square roots, fused multiply-adds and masks by the builtins its intrinsics call, so that
+   <immintrin.h> is included only for 512 bits), else (NEON not measured
    yet), or with CYL_BATCH_PORTABLE, the same text over one lane. `make bench-batch` measures
    each form.
 */
@@ -78,7 +79,19 @@
 #else
 #define CYL__BVEC 16
 #endif
+#if CYL__BVEC == 64 /* the others call the builtins behind the intrinsics: no <immintrin.h> to parse */
 #include <immintrin.h>
+#else
+typedef double cyl__bvd __attribute__((vector_size(CYL__BVEC)));
+typedef float cyl__bvs __attribute__((vector_size(CYL__BVEC)));
+#if CYL__BVEC == 32
+#define CYL__BSFX 256
+#else
+#define CYL__BSFX
+#endif
+#define CYL__BJOIN(x, y) CYL__BJOIN2(x, y)
+#define CYL__BJOIN2(x, y) x##y
+#endif
 #else
 #define CYL__BVEC 0
 #endif
@@ -156,20 +169,18 @@ typedef int CYL__BP(m);
 #define CYL__BSEL(k_, x_, y_) ((k_) ? (x_) : (y_))
 #define CYL__BNOT(k_) (!(k_))
 #endif
-/* The intrinsics of the vector's width: CYL__BMM(op) names one, CYL__BMD and CYL__BMS are its
-   double and float types (the same vectors: copies between them cost no instruction). */
+/* The intrinsics of the vector's width, CYL__BMM(op, b) one of them: _mm512_op for 512 bits, else
+   b, the builtin that gcc's and clang's intrinsics of 128 bits call (gcc's manual, x86 Built-in
+   Functions), with 256 appended for 256 bits. CYL__BMD and CYL__BMS: its double and float
+   vectors, the same as the filter's (copies between them cost no instruction). */
 #if CYL__BVEC == 64
-#define CYL__BMM(op) _mm512_##op
+#define CYL__BMM(op, b) _mm512_##op
 #define CYL__BMD __m512d
 #define CYL__BMS __m512
-#elif CYL__BVEC == 32
-#define CYL__BMM(op) _mm256_##op
-#define CYL__BMD __m256d
-#define CYL__BMS __m256
 #elif CYL__BVEC
-#define CYL__BMM(op) _mm_##op
-#define CYL__BMD __m128d
-#define CYL__BMS __m128
+#define CYL__BMM(op, b) CYL__BJOIN(__builtin_ia32_##b, CYL__BSFX)
+#define CYL__BMD cyl__bvd
+#define CYL__BMS cyl__bvs
 #endif
 /* x·y + z: one fused instruction where the build has the FMA (the bounds hold either way). */
 #if CYL__BVEC && defined(__FMA__)
@@ -177,7 +188,7 @@ CYL__ALWAYS CYL__BP(v) CYL__BP(fma)(CYL__BP(v) x, CYL__BP(v) y, CYL__BP(v) z)
 {
 #define CYL__BFM(t, f) { t a_, b_, c_; __builtin_memcpy(&a_, &x, sizeof a_), __builtin_memcpy(&b_, &y, sizeof b_), __builtin_memcpy(&c_, &z, sizeof c_); \
                          a_ = f(a_, b_, c_); __builtin_memcpy(&x, &a_, sizeof x); return x; }
-    if (sizeof(CYL__BK) == 8) CYL__BFM(CYL__BMD, CYL__BMM(fmadd_pd)) else CYL__BFM(CYL__BMS, CYL__BMM(fmadd_ps))
+    if (sizeof(CYL__BK) == 8) CYL__BFM(CYL__BMD, CYL__BMM(fmadd_pd, vfmaddpd)) else CYL__BFM(CYL__BMS, CYL__BMM(fmadd_ps, vfmaddps))
 #undef CYL__BFM
 }
 #define CYL__BFMA(x_, y_, z_) CYL__BP(fma)(x_, y_, z_)
@@ -192,7 +203,7 @@ CYL__ALWAYS void CYL__BP(sqrt)(CYL__BP(v) *xp)
     const CYL__BP(v) x = *xp;
 #if CYL__BVEC /* the intrinsic's type is the same vector: a copy, no instruction */
 #define CYL__BSQ(t, f) { t y; __builtin_memcpy(&y, &x, sizeof y); y = f(y); __builtin_memcpy(xp, &y, sizeof y); }
-    if (sizeof(CYL__BK) == 8) CYL__BSQ(CYL__BMD, CYL__BMM(sqrt_pd)) else CYL__BSQ(CYL__BMS, CYL__BMM(sqrt_ps))
+    if (sizeof(CYL__BK) == 8) CYL__BSQ(CYL__BMD, CYL__BMM(sqrt_pd, sqrtpd)) else CYL__BSQ(CYL__BMS, CYL__BMM(sqrt_ps, sqrtps))
 #undef CYL__BSQ
 #else
     *xp = CYL__BSQRT1(x);
@@ -208,7 +219,7 @@ CYL__ALWAYS unsigned CYL__BP(bits)(const CYL__BP(m) *mp)
 #if CYL__BVEC == 64
     if (sizeof(CYL__BK) == 8) CYL__BMV(__m512i, _mm512_test_epi64_mask(y, y)) else CYL__BMV(__m512i, _mm512_test_epi32_mask(y, y))
 #else
-    if (sizeof(CYL__BK) == 8) CYL__BMV(CYL__BMD, CYL__BMM(movemask_pd)(y)) else CYL__BMV(CYL__BMS, CYL__BMM(movemask_ps)(y))
+    if (sizeof(CYL__BK) == 8) CYL__BMV(CYL__BMD, CYL__BMM(movemask_pd, movmskpd)(y)) else CYL__BMV(CYL__BMS, CYL__BMM(movemask_ps, movmskps)(y))
 #endif
 #undef CYL__BMV
 #else

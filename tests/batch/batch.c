@@ -18,6 +18,13 @@
 #include "unity.h"
 #include "cylinder_isect_batch.h"
 
+/* Only the 512-bit form (CYL_BATCH_VECTOR_BYTES 64) may include <immintrin.h>, whose parsing costs
+   every unit that includes the batch's header (gcc's guard, then clang's). */
+#if !(defined(CYL_BATCH_VECTOR_BYTES) && CYL_BATCH_VECTOR_BYTES == 64) && \
+    (defined(_IMMINTRIN_H_INCLUDED) || defined(__IMMINTRIN_H))
+#error "cylinder_isect_batch.h included <immintrin.h> outside its 512-bit form"
+#endif
+
 #ifdef T_DOUBLE
 #define T double
 #define CYL(x) cyld_##x
