@@ -84,13 +84,6 @@
 #else
 typedef double cyl__bvd __attribute__((vector_size(CYL__BVEC)));
 typedef float cyl__bvs __attribute__((vector_size(CYL__BVEC)));
-#if CYL__BVEC == 32
-#define CYL__BSFX 256
-#else
-#define CYL__BSFX
-#endif
-#define CYL__BJOIN(x, y) CYL__BJOIN2(x, y)
-#define CYL__BJOIN2(x, y) x##y
 #endif
 #else
 #define CYL__BVEC 0
@@ -178,7 +171,11 @@ typedef int CYL__BP(m);
 #define CYL__BMD __m512d
 #define CYL__BMS __m512
 #elif CYL__BVEC
-#define CYL__BMM(op, b) CYL__BJOIN(__builtin_ia32_##b, CYL__BSFX)
+#if CYL__BVEC == 32
+#define CYL__BMM(op, b) __builtin_ia32_##b##256
+#else
+#define CYL__BMM(op, b) __builtin_ia32_##b
+#endif
 #define CYL__BMD cyl__bvd
 #define CYL__BMS cyl__bvs
 #endif
