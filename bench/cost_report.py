@@ -246,6 +246,7 @@ def layers(loaded):
              "and the normal.", "",
              "| part | " + " | ".join(f"{pn}, {flags}" for _, flags, _, pn in keys) + " |",
              "|---|" + "---:|" * len(keys)]
+    plain = "intersect:plain"
 
     def row(label, diff):
         cells = [diff(loaded[("v2", m)][0], prec) for m, _, prec, _ in keys]
@@ -261,7 +262,6 @@ def layers(loaded):
         ep = vals.get((prec, "endpoint"))
         return sub(lim * ep, vals.get((prec, plain))) if isinstance(ep, float) else None
 
-    plain = "intersect:plain"
     lines += [row("t_err bound (CAPS\\|NO_NORMAL)", less("intersect:bound", plain)),
               row("normal (CAPS\\|NO_ERRBOUND)", less("intersect:normal", plain)),
               row("both: the default (CAPS)", less("intersect:default", plain)),
