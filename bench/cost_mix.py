@@ -84,6 +84,11 @@ def main():
     ap.add_argument("runs", nargs="+", help="KEY=BINARY:CGDIR")
     args = ap.parse_args()
     loops = [tuple(x.split()) for x in args.loops.split(",")]
+    known = dict(PRECS)
+    bad = [" ".join(lp) for lp in loops if len(lp) != 2 or lp[0] not in known]
+    if bad:
+        ap.error("--loops: each entry is 'PREC NAME' with PREC one of %s, not: %s"
+                 % (", ".join(known), "; ".join(repr(b) for b in bad)))
     print("Instructions per call by kind (callgrind, bench/cost.c's loops, the empty loop's "
           "subtracted): move = register copies, shuffles, loads, stores (lea, push, pop too); "
           "decide = comparisons and branches; call = outside the binary.\n")
