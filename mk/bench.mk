@@ -156,7 +156,7 @@ endif
 # the instruction counts, then the report and (V=1) the README's copy of its table.
 .PHONY: report
 report: deps $(BENCH_BUILD)/bench $(REPORT_VENV)/.installed
-	$(BENCH_BUILD)/bench --seed $(BENCH_SEED) --n $(BENCH_N) --json $(BENCH_BUILD)/results.json | tee $(BENCH_BUILD)/bench.txt
+	set -o pipefail; $(BENCH_BUILD)/bench --seed $(BENCH_SEED) --n $(BENCH_N) --json $(BENCH_BUILD)/results.json | tee $(BENCH_BUILD)/bench.txt
 	@rm -f $(BENCH_BUILD)/times-*.json
 	for k in $$(seq 2 $(BENCH_RUNS)); do \
 	  $(BENCH_BUILD)/bench --time-only --seed $(BENCH_SEED) --n $(BENCH_N) --json $(BENCH_BUILD)/times-$$k.json > /dev/null || exit 1; \

@@ -93,6 +93,6 @@ cost-mix: deps $(COST_BINS)
 	    --callgrind-out-file=$$d/out $(COST_BUILD)/cost-$$key --n $(COST_N) --seed $(COST_SEED) \
 	    > $$d/plan.txt 2> $$d/valgrind.log || { tail -n 20 $$d/valgrind.log >&2; exit 1; }; \
 	done
-	@$(PYTHON) bench/cost_mix.py --loops '$(COST_MIX_LOOPS)' \
+	@set -o pipefail; $(PYTHON) bench/cost_mix.py --loops '$(COST_MIX_LOOPS)' \
 	  $(foreach k,$(COST_KEYS),$(k)=$(COST_BUILD)/cost-$(k):$(COST_BUILD)/mix-$(k)) \
 	  | tee $(COST_BUILD)/cost-mix.md
