@@ -19,15 +19,15 @@ static void expect_error_at(const Ray *ray, const Cyl *cyl, unsigned opts, int c
     if (cyl) cyl_copy = *cyl; else memset(&cyl_copy, 0, sizeof cyl_copy);
     sentinel(&h, 1); sentinel(&h0, 1); sentinel(hs, 2); sentinel(hs0, 2);
     snprintf(m, sizeof m, "%s: intersect", what);
-    chk_int_at(code, CYL(intersect)(ray, cyl, opts, &h), m, line);
+    chk_int_at(code, rt_intersect(ray, cyl, opts, &h), m, line);
     snprintf(m, sizeof m, "%s: intersect left *hit untouched", what);
     UNITY_TEST_ASSERT(memcmp(&h, &h0, sizeof h) == 0, line, m);
     snprintf(m, sizeof m, "%s: intersect_all", what);
-    chk_int_at(code, CYL(intersect_all)(ray, cyl, opts, hs), m, line);
+    chk_int_at(code, rt_intersect_all(ray, cyl, opts, hs), m, line);
     snprintf(m, sizeof m, "%s: intersect_all left hits[] untouched", what);
     UNITY_TEST_ASSERT(memcmp(hs, hs0, sizeof hs) == 0, line, m);
     snprintf(m, sizeof m, "%s: occluded", what);
-    chk_int_at(code, CYL(occluded)(ray, cyl, opts), m, line);
+    chk_int_at(code, rt_occluded(ray, cyl, opts), m, line);
     snprintf(m, sizeof m, "%s: inputs unchanged", what);
     UNITY_TEST_ASSERT(!ray || memcmp(ray, &ray_copy, sizeof ray_copy) == 0, line, m);
     UNITY_TEST_ASSERT(!cyl || memcmp(cyl, &cyl_copy, sizeof cyl_copy) == 0, line, m);
@@ -221,9 +221,9 @@ static void test_inputs_unmodified_and_miss_untouched(void)
             ray0 = ray;
             cyl0 = cyl;
             sentinel(&h, 1); sentinel(&h0, 1); sentinel(hs, 2); sentinel(hs0, 2);
-            rc = CYL(intersect)(&ray, &cyl, opt_sets[k], &h);
-            n = CYL(intersect_all)(&ray, &cyl, opt_sets[k], hs);
-            (void)CYL(occluded)(&ray, &cyl, opt_sets[k]);
+            rc = rt_intersect(&ray, &cyl, opt_sets[k], &h);
+            n = rt_intersect_all(&ray, &cyl, opt_sets[k], hs);
+            (void)rt_occluded(&ray, &cyl, opt_sets[k]);
             CHECK(memcmp(&ray, &ray0, sizeof ray) == 0, scenes[i].name);
             CHECK(memcmp(&cyl, &cyl0, sizeof cyl) == 0, scenes[i].name);
             if (rc == CYL_MISS) CHECK(memcmp(&h, &h0, sizeof h) == 0, "miss: *hit untouched");
@@ -259,9 +259,9 @@ static void test_trusted_broken_promise(void)
                 *in[slot] = bad[b];
                 ray0 = ray, cyl0 = cyl;
                 sentinel(&h, 1); sentinel(&h0, 1); sentinel(hs, 2); sentinel(hs0, 2);
-                rc = CYL(intersect)(&ray, &cyl, opts[k], &h);
-                n = CYL(intersect_all)(&ray, &cyl, opts[k], hs);
-                oc = CYL(occluded)(&ray, &cyl, opts[k]);
+                rc = rt_intersect(&ray, &cyl, opts[k], &h);
+                n = rt_intersect_all(&ray, &cyl, opts[k], hs);
+                oc = rt_occluded(&ray, &cyl, opts[k]);
                 for (j = 0; j < 4; j++)
                     snprintf(m[j], sizeof m[j], "input %d = %Lg, opts 0x%x: %s", slot, (long double)bad[b], opts[k], what[j]);
                 CHECK((rc == 0 || rc == 1) && n >= 0 && n <= 2 && (oc == 0 || oc == 1), m[0]);

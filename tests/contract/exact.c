@@ -205,11 +205,11 @@ static void test_origin_inside(void)
     for (k = 0; k < 2; k++) {
         unsigned opts = k ? CYL_CAPS : 0u;
         sentinel(hs, 2);
-        EQ_INT(1, CYL(intersect_all)(&ray, &cyl, opts, hs), "inside: only the exit");
+        EQ_INT(1, rt_intersect_all(&ray, &cyl, opts, hs), "inside: only the exit");
         HIT_EXACT(&hs[0], 0.75, CYL_SIDE, CYL_F_INSIDE, "exit from inside");
         VEC_EXACT(hs[0].n, -1, 0, 0, "facing n points back to the origin");
         sentinel(&h, 1);
-        EQ_INT(CYL_HIT, CYL(intersect)(&ray, &cyl, opts | CYL_OUTWARD, &h), "intersect");
+        EQ_INT(CYL_HIT, rt_intersect(&ray, &cyl, opts | CYL_OUTWARD, &h), "intersect");
         HIT_EXACT(&h, 0.75, CYL_SIDE, CYL_F_INSIDE, "exit from inside");
         VEC_EXACT(h.n, 1, 0, 0, "outward n");
     }
@@ -238,7 +238,7 @@ static void test_infinite_height(void)
     for (k = 0; k < 2; k++) {
         unsigned opts = k ? CYL_CAPS : 0u;
         sentinel(hs, 2);
-        EQ_INT(2, CYL(intersect_all)(&ray, &cyl, opts, hs), "infinite tube: two wall hits");
+        EQ_INT(2, rt_intersect_all(&ray, &cyl, opts, hs), "infinite tube: two wall hits");
         HIT_EXACT(&hs[0], 2, CYL_SIDE, 0u, "entry");
         HIT_EXACT(&hs[1], 4, CYL_SIDE, CYL_F_INSIDE, "exit");
         EXACT(1048576, hs[0].v, "v far along the axis");
@@ -319,7 +319,7 @@ static void test_extreme_height_beyond_radius_range(void)
     unsigned k;
     for (k = 0; k < 2; k++) {
         sentinel(hs, 2);
-        EQ_INT(2, CYL(intersect_all)(&ray, &cyl, k ? CYL_CAPS : 0u, hs), "two wall hits");
+        EQ_INT(2, rt_intersect_all(&ray, &cyl, k ? CYL_CAPS : 0u, hs), "two wall hits");
         EQ_INT(CYL_SIDE, hs[0].part, "entry on the wall");
         EQ_INT(CYL_SIDE, hs[1].part, "exit on the wall");
         CHECK(fabsl((long double)hs[0].t - ((long double)x - (long double)r)) <= (long double)hs[0].t_err, "entry: t_err holds");

@@ -21,11 +21,11 @@ static void test_no_normal_no_errbound_trusted(void)
             int n, j;
             scene_get(&scenes[i], &ray, &cyl);
             sentinel(base, 2);
-            n = CYL(intersect_all)(&ray, &cyl, opts, base);
+            n = rt_intersect_all(&ray, &cyl, opts, base);
 
             sentinel(other, 2);
             snprintf(m, sizeof m, "%s, opts 0x%x: CYL_NO_NORMAL", scenes[i].name, opts);
-            EQ_INT(n, CYL(intersect_all)(&ray, &cyl, opts | CYL_NO_NORMAL, other), m);
+            EQ_INT(n, rt_intersect_all(&ray, &cyl, opts | CYL_NO_NORMAL, other), m);
             for (j = 0; j < n; j++) {
                 VEC_EXACT(other[j].n, 0, 0, 0, "CYL_NO_NORMAL leaves n = {0,0,0}");
                 EXACT(base[j].t, other[j].t, "CYL_NO_NORMAL: same t");
@@ -35,7 +35,7 @@ static void test_no_normal_no_errbound_trusted(void)
             }
             sentinel(other, 2);
             snprintf(m, sizeof m, "%s, opts 0x%x: CYL_NO_ERRBOUND", scenes[i].name, opts);
-            EQ_INT(n, CYL(intersect_all)(&ray, &cyl, opts | CYL_NO_ERRBOUND, other), m);
+            EQ_INT(n, rt_intersect_all(&ray, &cyl, opts | CYL_NO_ERRBOUND, other), m);
             for (j = 0; j < n; j++) {
                 CHECK(isinf(other[j].t_err) && other[j].t_err > 0, "NO_ERRBOUND: t_err = +inf");
                 EXACT(base[j].t, other[j].t, "CYL_NO_ERRBOUND: same t");
@@ -45,19 +45,19 @@ static void test_no_normal_no_errbound_trusted(void)
             }
             sentinel(other, 2);
             snprintf(m, sizeof m, "%s, opts 0x%x: CYL_TRUSTED", scenes[i].name, opts);
-            EQ_INT(n, CYL(intersect_all)(&ray, &cyl, opts | CYL_TRUSTED, other), m);
+            EQ_INT(n, rt_intersect_all(&ray, &cyl, opts | CYL_TRUSTED, other), m);
             for (j = 0; j < n; j++) SAME_HIT(&base[j], &other[j], 1, m);
             {
                 Hit h1, h2;
                 int r1, r2;
                 sentinel(&h1, 1);
                 sentinel(&h2, 1);
-                r1 = CYL(intersect)(&ray, &cyl, opts, &h1);
-                r2 = CYL(intersect)(&ray, &cyl, opts | CYL_TRUSTED, &h2);
+                r1 = rt_intersect(&ray, &cyl, opts, &h1);
+                r2 = rt_intersect(&ray, &cyl, opts | CYL_TRUSTED, &h2);
                 EQ_INT(r1, r2, m);
                 CHECK(memcmp(&h1, &h2, sizeof h1) == 0, "CYL_TRUSTED intersect: same bytes");
-                EQ_INT(CYL(occluded)(&ray, &cyl, opts),
-                       CYL(occluded)(&ray, &cyl, opts | CYL_TRUSTED), m);
+                EQ_INT(rt_occluded(&ray, &cyl, opts),
+                       rt_occluded(&ray, &cyl, opts | CYL_TRUSTED), m);
             }
         }
     }
@@ -158,7 +158,7 @@ static void test_scale_invariance(void)
             Hit base[2];
             int n;
             sentinel(base, 2);
-            n = CYL(intersect_all)(&ray0, &cyl0, opts, base);
+            n = rt_intersect_all(&ray0, &cyl0, opts, base);
             for (e = 0; e < 2; e++) {
                 int variant;
                 for (variant = 0; variant < 3; variant++) {
@@ -173,7 +173,7 @@ static void test_scale_invariance(void)
                     snprintf(m, sizeof m, "%s, opts 0x%x, lengths*2^%d d*2^%d a*2^%d", name,
                              opts, le, de, ae);
                     sentinel(hs, 2);
-                    EQ_INT(n, CYL(intersect_all)(&ray, &cyl, opts, hs), m);
+                    EQ_INT(n, rt_intersect_all(&ray, &cyl, opts, hs), m);
                     for (j = 0; j < n; j++) {
                         chk_scaled_at(&base[j], &hs[j], &ray, &cyl, le, de, m, __LINE__);
                         EQ_INT(base[j].part, hs[j].part, m);
@@ -203,7 +203,7 @@ static void test_scale_across_hot_range_edge(void)
             Hit base[2];
             int n;
             sentinel(base, 2);
-            n = CYL(intersect_all)(&ray0, &cyl0, opt_sets[k], base);
+            n = rt_intersect_all(&ray0, &cyl0, opt_sets[k], base);
             for (e = 0; e < sizeof edge / sizeof edge[0]; e++) {
                 Ray ray = ray0;
                 Cyl cyl = cyl0;
@@ -212,7 +212,7 @@ static void test_scale_across_hot_range_edge(void)
                 scale_scene(&ray, &cyl, edge[e], edge[e], 0);
                 snprintf(m, sizeof m, "%s, opts 0x%x, lengths and d*2^%d", name, opt_sets[k], edge[e]);
                 sentinel(hs, 2);
-                EQ_INT(n, CYL(intersect_all)(&ray, &cyl, opt_sets[k], hs), m);
+                EQ_INT(n, rt_intersect_all(&ray, &cyl, opt_sets[k], hs), m);
                 for (j = 0; j < n; j++) {
                     chk_scaled_at(&base[j], &hs[j], &ray, &cyl, edge[e], edge[e], m, __LINE__);
                     EQ_INT(base[j].part, hs[j].part, m);
@@ -239,7 +239,7 @@ static void test_translation_invariance(void)
             RefGeom g;
             ref_geom(&ray0, &cyl0, &g);
             sentinel(base, 2);
-            n = CYL(intersect_all)(&ray0, &cyl0, opts, base);
+            n = rt_intersect_all(&ray0, &cyl0, opts, base);
             for (o = 0; o < sizeof offs / sizeof offs[0]; o++) {
                 Ray ray = ray0;
                 Cyl cyl = cyl0;
@@ -251,7 +251,7 @@ static void test_translation_invariance(void)
                 }
                 snprintf(m, sizeof m, "%s, opts 0x%x, offset %d", name, opts, (int)o);
                 sentinel(hs, 2);
-                EQ_INT(n, CYL(intersect_all)(&ray, &cyl, opts, hs), m);
+                EQ_INT(n, rt_intersect_all(&ray, &cyl, opts, hs), m);
                 for (j = 0; j < n; j++) {
                     long double sc = fabsl((long double)base[j].t) > g.tscale
                                          ? fabsl((long double)base[j].t) : g.tscale;

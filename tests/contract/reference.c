@@ -52,7 +52,7 @@ static void test_scenes_against_reference(void)
             scene_get(&scenes[i], &ray, &cyl);
             nref = ref_solve(&ray, &cyl, (opts & CYL_CAPS) != 0, rh);
             sentinel(hs, 2);
-            n = CYL(intersect_all)(&ray, &cyl, opts, hs);
+            n = rt_intersect_all(&ray, &cyl, opts, hs);
             snprintf(m, sizeof m, "%s, opts 0x%x: count", scenes[i].name, opts);
             EQ_INT(nref, n, m);
             for (j = 0; j < n && j < nref; j++) {
@@ -174,7 +174,7 @@ static void test_random_scenes_against_reference(void)
             if (NO_PRECISE_SET(opts)) continue;
             nref = ref_solve(&ray, &cyl, (opts & CYL_CAPS) != 0, rh);
             sentinel(hs, 2);
-            n = CYL(intersect_all)(&ray, &cyl, opts, hs);
+            n = rt_intersect_all(&ray, &cyl, opts, hs);
             snprintf(m, sizeof m, "random scene %d, opts 0x%x", i, opts);
             EQ_INT(nref, n, m);
             hits_seen += n;
@@ -183,9 +183,9 @@ static void test_random_scenes_against_reference(void)
                 NORMAL_RULE(&ray, &cyl, opts, &hs[j], m);
             }
             sentinel(&h, 1);
-            EQ_INT(n ? CYL_HIT : CYL_MISS, CYL(intersect)(&ray, &cyl, opts, &h), m);
+            EQ_INT(n ? CYL_HIT : CYL_MISS, rt_intersect(&ray, &cyl, opts, &h), m);
             if (n) SAME_HIT(&hs[0], &h, 1, m);
-            EQ_INT(n > 0, CYL(occluded)(&ray, &cyl, opts), m);
+            EQ_INT(n > 0, rt_occluded(&ray, &cyl, opts), m);
         }
     }
     /* the test is not vacuous: most scenes are checked, and many of them hit */
@@ -227,9 +227,9 @@ static void test_precise_same_classification(void)
             scene_get(&scenes[i], &ray, &cyl);
             sentinel(base, 2);
             sentinel(prec, 2);
-            n = CYL(intersect_all)(&ray, &cyl, opts, base);
+            n = rt_intersect_all(&ray, &cyl, opts, base);
             snprintf(m, sizeof m, "%s, opts 0x%x: CYL_PRECISE", scenes[i].name, opts);
-            EQ_INT(n, CYL(intersect_all)(&ray, &cyl, opts | CYL_PRECISE, prec), m);
+            EQ_INT(n, rt_intersect_all(&ray, &cyl, opts | CYL_PRECISE, prec), m);
             EQ_INT(n, ref_solve(&ray, &cyl, (opts & CYL_CAPS) != 0, rh), m);
             for (j = 0; j < n; j++) {
                 EQ_INT(base[j].part, prec[j].part, m);
@@ -237,8 +237,8 @@ static void test_precise_same_classification(void)
                 CHK_AGAINST_REF(&ray, &cyl, opts, &prec[j], &rh[j], m);
             }
             sentinel(&h, 1);
-            EQ_INT(n > 0 ? CYL_HIT : CYL_MISS, CYL(intersect)(&ray, &cyl, opts | CYL_PRECISE, &h), m);
-            EQ_INT(n > 0, CYL(occluded)(&ray, &cyl, opts | CYL_PRECISE), m);
+            EQ_INT(n > 0 ? CYL_HIT : CYL_MISS, rt_intersect(&ray, &cyl, opts | CYL_PRECISE, &h), m);
+            EQ_INT(n > 0, rt_occluded(&ray, &cyl, opts | CYL_PRECISE), m);
         }
     }
     {   /* and on the exact case, exactly */
@@ -277,7 +277,7 @@ static void test_t_err_contains_closed_form(void)
                 tt[1] = -ox + half;
                 want = (tt[0] >= 0) + (tt[1] >= 0);
                 sentinel(hs, 2);
-                n = CYL(intersect_all)(&ray, &cyl, opts, hs);
+                n = rt_intersect_all(&ray, &cyl, opts, hs);
                 snprintf(m, sizeof m, "y0 = %g, ox = %g, opts 0x%x", ys[i], oxs[k], opts);
                 EQ_INT(want, n, m);
                 for (j = 0; j < n; j++) {

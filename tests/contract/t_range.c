@@ -105,9 +105,9 @@ static void test_all_sorted_consistent_with_intersect_and_occluded(void)
             scene_get(&scenes[i], &ray, &cyl);
             sentinel(&h, 1);
             sentinel(hs, 2);
-            n = CYL(intersect_all)(&ray, &cyl, opts, hs);
-            rc = CYL(intersect)(&ray, &cyl, opts, &h);
-            occ = CYL(occluded)(&ray, &cyl, opts);
+            n = rt_intersect_all(&ray, &cyl, opts, hs);
+            rc = rt_intersect(&ray, &cyl, opts, &h);
+            occ = rt_occluded(&ray, &cyl, opts);
             snprintf(m, sizeof m, "%s, opts 0x%x", scenes[i].name, opts);
             CHECK(n >= 0 && n <= 2, m);
             EQ_INT(n > 0 ? CYL_HIT : CYL_MISS, rc, m);
@@ -122,9 +122,9 @@ static void test_all_sorted_consistent_with_intersect_and_occluded(void)
                     Hit hs2[2];
                     sentinel(&h, 1);
                     sentinel(hs2, 2);
-                    EQ_INT(CYL_HIT, CYL(intersect)(&ray, &cyl, opts, &h), m);
+                    EQ_INT(CYL_HIT, rt_intersect(&ray, &cyl, opts, &h), m);
                     SAME_HIT(&hs[1], &h, 0, m);
-                    EQ_INT(1, CYL(intersect_all)(&ray, &cyl, opts, hs2), m);
+                    EQ_INT(1, rt_intersect_all(&ray, &cyl, opts, hs2), m);
                     SAME_HIT(&hs[1], &hs2[0], 1, m);
                 }
                 /* tmin one ulp past the first hit is a decision within rounding of its
@@ -136,9 +136,9 @@ static void test_all_sorted_consistent_with_intersect_and_occluded(void)
                     int n2;
                     sentinel(&h, 1);
                     sentinel(hs2, 2);
-                    n2 = CYL(intersect_all)(&ray, &cyl, opts, hs2);
+                    n2 = rt_intersect_all(&ray, &cyl, opts, hs2);
                     CHECK(n2 >= 1, "the second hit stays in range");
-                    EQ_INT(CYL_HIT, CYL(intersect)(&ray, &cyl, opts, &h), m);
+                    EQ_INT(CYL_HIT, rt_intersect(&ray, &cyl, opts, &h), m);
                     SAME_HIT(&hs2[0], &h, 1, m);
                     CHECK(h.t >= ray.tmin && h.t <= ray.tmax, "intersect: t within [tmin, tmax]");
                 }

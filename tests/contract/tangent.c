@@ -41,10 +41,10 @@ static void test_rim_exact(void)
         up.o[2] = T_NEXT(L(1), L(2));
         down.o[2] = T_NEXT(L(1), L(0));
         sentinel(hs, 2);
-        EQ_INT(0, CYL(intersect_all)(&up, &cyl, opts, hs), "one ulp above the rim plane: miss");
-        EQ_INT(0, CYL(occluded)(&up, &cyl, opts), "occluded: miss above the rim");
+        EQ_INT(0, rt_intersect_all(&up, &cyl, opts, hs), "one ulp above the rim plane: miss");
+        EQ_INT(0, rt_occluded(&up, &cyl, opts), "occluded: miss above the rim");
         sentinel(hs, 2);
-        EQ_INT(2, CYL(intersect_all)(&down, &cyl, opts, hs), "one ulp below the rim: hit");
+        EQ_INT(2, rt_intersect_all(&down, &cyl, opts, hs), "one ulp below the rim: hit");
         HIT_EXACT(&hs[0], 2, CYL_SIDE, 0u, "below rim entry");
         HIT_EXACT(&hs[1], 4, CYL_SIDE, CYL_F_INSIDE, "below rim exit");
     }
