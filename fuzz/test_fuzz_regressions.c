@@ -17,6 +17,26 @@ static void regress_fail(const char *msg);
 #define FZ_FAIL(msg) regress_fail(msg)
 #include "fuzz_check.h"
 
+/* Calls with options from a loop go through one out-of-line copy per entry point: the header
+ * forces its entry points inline, and each direct call with variable options copies the whole
+ * body, every option's code in it (the runner's compile time). */
+#if defined(__GNUC__)
+#define RT_FN static __attribute__((noinline, unused))
+#else
+#define RT_FN static inline
+#endif
+#define RT_CALLS(P)                                                                              \
+  RT_FN int rt_##P##_intersect(const cyl##P##_ray *r, const cyl##P##_cylinder *c, unsigned o,    \
+                               cyl##P##_hit *h)                                                  \
+  { return cyl##P##_intersect(r, c, o, h); }                                                    \
+  RT_FN int rt_##P##_intersect_all(const cyl##P##_ray *r, const cyl##P##_cylinder *c, unsigned o, \
+                                   cyl##P##_hit *h)                                              \
+  { return cyl##P##_intersect_all(r, c, o, h); }                                                \
+  RT_FN int rt_##P##_occluded(const cyl##P##_ray *r, const cyl##P##_cylinder *c, unsigned o)     \
+  { return cyl##P##_occluded(r, c, o); }
+RT_CALLS(f)
+RT_CALLS(d)
+
 #ifndef FUZZ_FINDINGS_DIR
 #define FUZZ_FINDINGS_DIR "fuzz/findings"
 #endif
@@ -318,7 +338,7 @@ static void expect_precise_hits_d(const cyld_ray *ray, const cyld_cylinder *cyl,
   int i;
   precise_or_skip();
   memset(h, 0, sizeof h);
-  TEST_ASSERT_EQUAL_INT_MESSAGE(n, cyld_intersect_all(ray, cyl, opts, h), "count");
+  TEST_ASSERT_EQUAL_INT_MESSAGE(n, rt_d_intersect_all(ray, cyl, opts, h), "count");
   for (i = 0; i < n; i++) {
     TEST_ASSERT_EQUAL_INT_MESSAGE(part[i], h[i].part, "part");
     TEST_ASSERT_TRUE_MESSAGE(fabs(h[i].t - t[i]) <= h[i].t_err, "t_err holds the exact t");
@@ -478,8 +498,8 @@ static void test_order2_widening_rounds_up(void)
         memset(w, 0, sizeof w);
         tube = cyl;
         tube.h = (float)INFINITY;
-        n = cylf_intersect_all(&rayf, &cyl, opts[i], h);
-        nw = cylf_intersect_all(&rayf, &tube, tube_opts, w);
+        n = rt_f_intersect_all(&rayf, &cyl, opts[i], h);
+        nw = rt_f_intersect_all(&rayf, &tube, tube_opts, w);
         for (j = 0; j < 2; j++) {
           hs[j].t = (double)h[j].t, hs[j].t_err = (double)h[j].t_err;
           hs[j].part = h[j].part, hs[j].flags = h[j].flags;
@@ -507,8 +527,8 @@ static void test_order2_widening_rounds_up(void)
         cyl = cyld_from_segment(p0, p1, (double)rf);
         tube = cyl;
         tube.h = (double)INFINITY;
-        n = cyld_intersect_all(&ray, &cyl, opts[i], h);
-        nw = cyld_intersect_all(&ray, &tube, tube_opts, w);
+        n = rt_d_intersect_all(&ray, &cyl, opts[i], h);
+        nw = rt_d_intersect_all(&ray, &tube, tube_opts, w);
         for (j = 0; j < 2; j++) {
           hs[j].t = h[j].t, hs[j].t_err = h[j].t_err, hs[j].part = h[j].part, hs[j].flags = h[j].flags;
           ws[j].t = w[j].t, ws[j].t_err = w[j].t_err, ws[j].part = w[j].part, ws[j].flags = w[j].flags;
@@ -539,9 +559,9 @@ static void expect_double_miss(const cyld_ray *ray, const cyld_cylinder *cyl,
     if (NO_PRECISE_SET(opts[i]) || CERTIFIED_ONLY(opts[i])) continue;
     ran++;
     memset(h, 0, sizeof h);
-    TEST_ASSERT_EQUAL_INT_MESSAGE(0, cyld_occluded(ray, cyl, opts[i]), "occluded");
-    TEST_ASSERT_EQUAL_INT_MESSAGE(CYL_MISS, cyld_intersect(ray, cyl, opts[i], h), "intersect");
-    TEST_ASSERT_EQUAL_INT_MESSAGE(0, cyld_intersect_all(ray, cyl, opts[i], h), "intersect_all");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, rt_d_occluded(ray, cyl, opts[i]), "occluded");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(CYL_MISS, rt_d_intersect(ray, cyl, opts[i], h), "intersect");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, rt_d_intersect_all(ray, cyl, opts[i], h), "intersect_all");
   }
   ran_or_skip(ran);
 }
@@ -584,14 +604,14 @@ static void flat_disk_case(const cylf_ray *ray, const cylf_cylinder *cyl, double
     if (NO_PRECISE_SET(opts[i]) || CERTIFIED_ONLY(opts[i])) continue;
     ran++;
     memset(h, 0, sizeof h);
-    TEST_ASSERT_EQUAL_INT_MESSAGE(want, cylf_occluded(ray, cyl, opts[i]), "occluded");
-    TEST_ASSERT_EQUAL_INT_MESSAGE(want ? CYL_HIT : CYL_MISS, cylf_intersect(ray, cyl, opts[i], h),
+    TEST_ASSERT_EQUAL_INT_MESSAGE(want, rt_f_occluded(ray, cyl, opts[i]), "occluded");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(want ? CYL_HIT : CYL_MISS, rt_f_intersect(ray, cyl, opts[i], h),
                                   "intersect");
     if (want) {
       TEST_ASSERT_EQUAL_INT_MESSAGE(CYL_SIDE, h[0].part, "part");
       TEST_ASSERT_TRUE_MESSAGE(fabs((double)h[0].t - t_exact) <= (double)h[0].t_err, "t_err");
     }
-    TEST_ASSERT_EQUAL_INT_MESSAGE(want, cylf_intersect_all(ray, cyl, opts[i], h), "intersect_all");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(want, rt_f_intersect_all(ray, cyl, opts[i], h), "intersect_all");
   }
   ran_or_skip(ran);
 }
@@ -647,9 +667,9 @@ static void test_double_contracted_two_sum_t_err(void)
     cyld_hit h[2];
     if (NO_PRECISE_SET(opts[i])) continue;
     memset(h, 0, sizeof h);
-    TEST_ASSERT_EQUAL_INT_MESSAGE(CYL_HIT, cyld_intersect(&ray, &cyl, opts[i], h), "intersect");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(CYL_HIT, rt_d_intersect(&ray, &cyl, opts[i], h), "intersect");
     TEST_ASSERT_TRUE_MESSAGE(fabs(h[0].t - t_exact) <= h[0].t_err, "t_err does not hold t");
-    TEST_ASSERT_EQUAL_INT_MESSAGE(2, cyld_intersect_all(&ray, &cyl, opts[i], h), "intersect_all");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(2, rt_d_intersect_all(&ray, &cyl, opts[i], h), "intersect_all");
     TEST_ASSERT_TRUE_MESSAGE(fabs(h[0].t - t_exact) <= h[0].t_err, "t_err does not hold t (all)");
   }
 }
@@ -694,9 +714,9 @@ static void test_double_precise_entry_points_disagree(void)
     cyld_hit h1, h2[2];
     memset(&h1, 0, sizeof h1);
     memset(h2, 0, sizeof h2);
-    TEST_ASSERT_EQUAL_INT_MESSAGE(CYL_HIT, cyld_intersect(&ray, &cyl, opts[i], &h1), "intersect");
-    TEST_ASSERT_EQUAL_INT_MESSAGE(2, cyld_intersect_all(&ray, &cyl, opts[i], h2), "intersect_all");
-    TEST_ASSERT_EQUAL_INT_MESSAGE(1, cyld_occluded(&ray, &cyl, opts[i]), "occluded");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(CYL_HIT, rt_d_intersect(&ray, &cyl, opts[i], &h1), "intersect");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(2, rt_d_intersect_all(&ray, &cyl, opts[i], h2), "intersect_all");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(1, rt_d_occluded(&ray, &cyl, opts[i]), "occluded");
     /* the same crossing, bit for bit: exactness is the point */
     TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&h1.t, &h2[0].t, sizeof h1.t, "first hits' t differ");
     TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&h1.t_err, &h2[0].t_err, sizeof h1.t_err, "t_err differ");
@@ -732,11 +752,11 @@ static void test_double_cap_plane_parallel_nan(void)
     if (NO_PRECISE_SET(opts[i])) continue;
     memset(h, 0, sizeof h);
     memset(&h1, 0, sizeof h1);
-    n = cyld_intersect_all(&ray, &cyl, opts[i], h);
-    one = cyld_intersect(&ray, &cyl, opts[i], &h1);
+    n = rt_d_intersect_all(&ray, &cyl, opts[i], h);
+    one = rt_d_intersect(&ray, &cyl, opts[i], &h1);
     TEST_ASSERT_TRUE_MESSAGE(n >= 0 && n <= 2, "intersect_all");
     TEST_ASSERT_EQUAL_INT_MESSAGE(n > 0 ? CYL_HIT : CYL_MISS, one, "intersect and intersect_all");
-    TEST_ASSERT_EQUAL_INT_MESSAGE(n > 0, cyld_occluded(&ray, &cyl, opts[i]), "occluded");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(n > 0, rt_d_occluded(&ray, &cyl, opts[i]), "occluded");
     for (j = 0; j < n; j++) {
       TEST_ASSERT_TRUE_MESSAGE(h[j].t >= ray.tmin && h[j].t <= ray.tmax, "t NaN or out of range");
       TEST_ASSERT_TRUE_MESSAGE(h[j].t_err >= 0, "t_err NaN or negative");
@@ -765,7 +785,7 @@ static void test_double_tangent_far_root_zero_normal(void)
     int n, j;
     if (NO_PRECISE_SET(opts[i])) continue;
     memset(h, 0, sizeof h);
-    n = cyld_intersect_all(&ray, &cyl, opts[i], h);
+    n = rt_d_intersect_all(&ray, &cyl, opts[i], h);
     TEST_ASSERT_EQUAL_INT_MESSAGE(2, n, "intersect_all");
     for (j = 0; j < n; j++) {
       double l = sqrt(h[j].n[0] * h[j].n[0] + h[j].n[1] * h[j].n[1] + h[j].n[2] * h[j].n[2]);
@@ -797,7 +817,7 @@ static void test_double_near_parallel_default_rim(void)
   for (i = 0; i < sizeof opts / sizeof opts[0]; i++) {
     cyld_hit h[2];
     memset(h, 0, sizeof h);
-    n = cyld_intersect_all(&ray, &cyl, opts[i], h);
+    n = rt_d_intersect_all(&ray, &cyl, opts[i], h);
     TEST_ASSERT_TRUE_MESSAGE(n >= 0, "valid input");
     for (k = 0; k < n; k++) {
       long double al = sqrtl((long double)cyl.a[0] * cyl.a[0] + (long double)cyl.a[1] * cyl.a[1] +
@@ -831,8 +851,8 @@ static void test_double_surface_origin_near_tangent_rim(void)
   for (i = 0; i < sizeof opts / sizeof opts[0]; i++) {
     cyld_hit h[2];
     if (NO_PRECISE_SET(opts[i])) continue;
-    TEST_ASSERT_EQUAL_INT_MESSAGE(0, cyld_intersect_all(&ray, &cyl, opts[i], h), "intersect_all");
-    TEST_ASSERT_EQUAL_INT_MESSAGE(0, cyld_occluded(&ray, &cyl, opts[i]), "occluded");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, rt_d_intersect_all(&ray, &cyl, opts[i], h), "intersect_all");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, rt_d_occluded(&ray, &cyl, opts[i]), "occluded");
   }
 }
 
