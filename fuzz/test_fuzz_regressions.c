@@ -17,25 +17,10 @@ static void regress_fail(const char *msg);
 #define FZ_FAIL(msg) regress_fail(msg)
 #include "fuzz_check.h"
 
-/* Calls with options from a loop go through one out-of-line copy per entry point: the header
- * forces its entry points inline, and each direct call with variable options copies the whole
- * body, every option's code in it (the runner's compile time). */
-#if defined(__GNUC__)
-#define RT_FN static __attribute__((noinline, unused))
-#else
-#define RT_FN static inline
-#endif
-#define RT_CALLS(P)                                                                              \
-  RT_FN int rt_##P##_intersect(const cyl##P##_ray *r, const cyl##P##_cylinder *c, unsigned o,    \
-                               cyl##P##_hit *h)                                                  \
-  { return cyl##P##_intersect(r, c, o, h); }                                                    \
-  RT_FN int rt_##P##_intersect_all(const cyl##P##_ray *r, const cyl##P##_cylinder *c, unsigned o, \
-                                   cyl##P##_hit *h)                                              \
-  { return cyl##P##_intersect_all(r, c, o, h); }                                                \
-  RT_FN int rt_##P##_occluded(const cyl##P##_ray *r, const cyl##P##_cylinder *c, unsigned o)     \
-  { return cyl##P##_occluded(r, c, o); }
-RT_CALLS(f)
-RT_CALLS(d)
+/* Calls with options from a loop: rt_f_* and rt_d_*, one out-of-line copy each (rt_calls.h). */
+#include "../tests/contract/rt_calls.h"
+RT_CALLS(rt_f_, f)
+RT_CALLS(rt_d_, d)
 
 #ifndef FUZZ_FINDINGS_DIR
 #define FUZZ_FINDINGS_DIR "fuzz/findings"

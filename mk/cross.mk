@@ -110,7 +110,7 @@ CROSS_FUZZ_SRCS   := $(if $(filter-out 0,$(CROSS_FUZZ)),$(wildcard fuzz/replay.c
 CROSS_FUZZ_FLAGS  := -Ifuzz -DFUZZ_CORPUS_DIR='"$(CURDIR)/fuzz/corpus"' -DFUZZ_GRID_DIR='"$(CURDIR)/fuzz/corpus_grid"' \
                      -DFUZZ_FINDINGS_DIR='"$(CURDIR)/fuzz/findings"' -DFZ_REF_ALWAYS=1
 CROSS_TEST_HDRS   := $(HDR) $(wildcard tests/*.h tests/*.inc)
-CROSS_FUZZ_HDRS   := $(HDR) $(wildcard fuzz/*.h)
+CROSS_FUZZ_HDRS   := $(HDR) $(wildcard fuzz/*.h) tests/contract/rt_calls.h
 
 # $(1) architecture
 define CROSS_ARCH_RULES

@@ -32,7 +32,7 @@ FUZZ_SEEDS_fuzz_isect := $(FUZZ_DIR)/seeds
 FUZZ_SEEDS_fuzz_grid  := $(FUZZ_DIR)/seeds_grid
 FUZZ_SEEDS_fuzz_batch := $(FUZZ_DIR)/work/fuzz_batch_float_only
 FUZZ_MERGED := $(filter-out fuzz_batch_float_only,$(FUZZ_HARNESSES))
-FUZZ_HDRS     := $(HDR) fuzz/fuzz_check.h fuzz/fuzz_grid.h fuzz/fuzz_ref.h $(if $(filter 2,$(V)),$(V2_DIR)/cylinder_isect_batch.h)
+FUZZ_HDRS     := $(HDR) fuzz/fuzz_check.h fuzz/fuzz_grid.h fuzz/fuzz_ref.h tests/contract/rt_calls.h $(if $(filter 2,$(V)),$(V2_DIR)/cylinder_isect_batch.h)
 # The harness runs where it is built: a real FMA makes the library's error-free steps fast.
 # The gcc replay is built without it, so libm's fma path is checked too.
 FUZZ_ARCH     ?= -march=native

@@ -37,6 +37,7 @@
 
 #include "unity.h"
 #include "cylinder_isect.h"
+#include "rt_calls.h"
 
 #ifdef T_DOUBLE
 #define T double
@@ -79,22 +80,12 @@ typedef CYL(ray) Ray;
 typedef CYL(cylinder) Cyl;
 typedef CYL(hit) Hit;
 
-/* The entry points for options known only at run time (a loop over option sets, a helper's
-   parameter): one out-of-line copy each. v2 forces its entry points inline, so a direct call
-   copies the whole body into its call site; with a variable opts that body keeps every
-   option's code, and 46 such sites doubled the runners' compile time. Calls with constant
-   options stay direct: they test the code a user's call site folds to. */
-#if defined(__GNUC__)
-#define RT_FN static __attribute__((noinline, unused))
+/* rt_intersect, rt_intersect_all, rt_occluded: for options known only at run time (rt_calls.h). */
+#ifdef T_DOUBLE
+RT_CALLS(rt_, d)
 #else
-#define RT_FN static inline
+RT_CALLS(rt_, f)
 #endif
-RT_FN int rt_intersect(const Ray *ray, const Cyl *cyl, unsigned opts, Hit *hit)
-{ return CYL(intersect)(ray, cyl, opts, hit); }
-RT_FN int rt_intersect_all(const Ray *ray, const Cyl *cyl, unsigned opts, Hit hits[2])
-{ return CYL(intersect_all)(ray, cyl, opts, hits); }
-RT_FN int rt_occluded(const Ray *ray, const Cyl *cyl, unsigned opts)
-{ return CYL(occluded)(ray, cyl, opts); }
 
 /* A literal in the precision under test (explicit cast: no -Wconversion noise, no promotion). */
 #define L(x) ((T)(x))
