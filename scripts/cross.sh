@@ -5,7 +5,8 @@
 #       of the object: the routine as that configuration gets it) and stack use
 #       (-fstack-usage), time the configurations side by side on this machine
 #       (embedded/timing.c), and write the tables into docs/embedded.md between the "sizes"
-#       markers. Raw figures: $BUILD/sizes/sizes.csv and $BUILD/sizes/timing.csv.
+#       markers. Raw figures: $BUILD/sizes/sizes.csv, $BUILD/sizes/timing.csv and, per symbol,
+#       $BUILD/sizes/functions.csv.
 #   scripts/cross.sh embedded   make embedded-check: the microcontroller builds of every
 #       configuration (the objects of `make sizes`, strict warnings, -Werror) and what they must
 #       not contain:
@@ -129,6 +130,18 @@ cmd_sizes() {
       # Stack: deepest path of the wrapper's call tree, frames as -fstack-usage measures them.
       nf=$(awk -F'\t' 'NF >= 2' "${o%.o}.su" | wc -l)
       echo "$t,$name,$p,$(obj_bytes "$o"),$(python3 scripts/cross.py stack "${o%.o}.ci" "cfg${p}_$name"),$nf" >>"$csv"
+    done
+  done
+  # Where each configuration's bytes go: every sized symbol of its object, largest first (the
+  # target's own nm: gcc -> nm, arm-none-eabi-gcc -> arm-none-eabi-nm).
+  fcsv=$out/functions.csv
+  echo "target,config,precision,symbol,bytes" >"$fcsv"
+  for tgt in "${CROSS_TARGETS[@]}"; do
+    t=$(cross_field "$tgt" 0); cc=$(cross_field "$tgt" 1)
+    [ -d "$out/$t" ] || continue
+    for o in "$out/$t"/*.o; do
+      b=$(basename "$o" .o)
+      "${cc%gcc}nm" -S --size-sort -r -t d "$o" | awk -v pre="$t,${b#*_},${b%%_*}" 'NF == 4 { print pre "," $4 "," $2 + 0 }' >>"$fcsv"
     done
   done
 
