@@ -122,26 +122,19 @@ cmd_sizes() {
   }
   csv=$out/sizes.csv
   echo "target,config,precision,bytes,stack,functions" >"$csv"
-  for tgt in "${CROSS_TARGETS[@]}"; do
-    t=$(cross_field "$tgt" 0)
-    [ -d "$out/$t" ] || continue
-    for o in "$out/$t"/*.o; do
-      b=$(basename "$o" .o); p=${b%%_*}; name=${b#*_}
-      # Stack: deepest path of the wrapper's call tree, frames as -fstack-usage measures them.
-      nf=$(awk -F'\t' 'NF >= 2' "${o%.o}.su" | wc -l)
-      echo "$t,$name,$p,$(obj_bytes "$o"),$(python3 scripts/cross.py stack "${o%.o}.ci" "cfg${p}_$name"),$nf" >>"$csv"
-    done
-  done
-  # Where each configuration's bytes go: every sized symbol of its object, largest first (the
-  # target's own nm: gcc -> nm, arm-none-eabi-gcc -> arm-none-eabi-nm).
   fcsv=$out/functions.csv
   echo "target,config,precision,symbol,bytes" >"$fcsv"
   for tgt in "${CROSS_TARGETS[@]}"; do
     t=$(cross_field "$tgt" 0); cc=$(cross_field "$tgt" 1)
     [ -d "$out/$t" ] || continue
     for o in "$out/$t"/*.o; do
-      b=$(basename "$o" .o)
-      "${cc%gcc}nm" -S --size-sort -r -t d "$o" | awk -v pre="$t,${b#*_},${b%%_*}" 'NF == 4 { print pre "," $4 "," $2 + 0 }' >>"$fcsv"
+      b=$(basename "$o" .o); p=${b%%_*}; name=${b#*_}
+      # Stack: deepest path of the wrapper's call tree, frames as -fstack-usage measures them.
+      nf=$(awk -F'\t' 'NF >= 2' "${o%.o}.su" | wc -l)
+      echo "$t,$name,$p,$(obj_bytes "$o"),$(python3 scripts/cross.py stack "${o%.o}.ci" "cfg${p}_$name"),$nf" >>"$csv"
+      # Where its bytes go: every sized symbol, largest first, by the target's own nm
+      # (gcc -> nm, arm-none-eabi-gcc -> arm-none-eabi-nm).
+      "${cc/%gcc*/nm}" -S --size-sort -r -t d "$o" | awk -v pre="$t,$name,$p" 'NF == 4 { print pre "," $4 "," $2 + 0 }' >>"$fcsv"
     done
   done
 
