@@ -5,7 +5,8 @@
 #   make test V=2   the same suite on v2/cylinder_isect.h, the rewrite growing beside v1 (below)
 #   make check      make test, then every other check (what CI runs: .ci/run): examples and the
 #                   viewer under Xvfb, cross and embedded builds under qemu, MISRA and
-#                   clang-tidy, C++ compatibility, the install test, a short fuzz run
+#                   clang-tidy, C++ compatibility, the install test, a short fuzz run, the
+#                   rewritten header's line budgets (make shape, mk/tests.mk)
 #   make demo       the examples (see mk/examples.mk)
 #   make install    the header, a pkg-config file and a CMake package (see mk/install.mk)
 #   make cost       instructions per call of v1 and v2 against the end-point routine (mk/cost.mk)
