@@ -58,36 +58,40 @@ def strip(text):
     return "".join(out)
 
 
+# Each bracket's step in depth; parentheses and braces nest properly in C, so one count serves both.
+DEPTH = {"(": 1, "{": 1, ")": -1, "}": -1}
+STRUCT = re.compile(r"\b(struct|union|enum)\s+\w+\s*\(\s*\w+\s*\)$")
+NAME = re.compile(r"(\w+\s*\(\s*\w+\s*\)|\w+)\s*$")
+
+
+def match(s, k, step):
+    """The index of the bracket that closes (step 1) or opens (step -1) the one at s[k]."""
+    d = 0
+    while 0 <= k < len(s):
+        d += DEPTH.get(s[k], 0) * step
+        if d == 0:
+            return k
+        k += step
+    return k
+
+
 def functions(text):
     """(name, first line, last line) of each function body at file scope, 1-based lines."""
     s = strip(text)
     line_of = lambda k: s.count("\n", 0, k) + 1
     found, depth, i = [], 0, 0
     while i < len(s):
-        c = s[i]
-        if (c == "{" and depth == 0 and s[:i].rstrip().endswith(")")
-                and not re.search(r"\b(struct|union|enum)\s+\w+\s*\(\s*\w+\s*\)\s*$", s[:i])):
-            close = s[:i].rstrip()
-            k, level = len(close) - 1, 0
-            while k >= 0:  # the '(' that opens the parameter list
-                level += {")": 1, "(": -1}.get(s[k], 0)
-                if level == 0:
-                    break
-                k -= 1
-            head = s[:k]
-            m = re.search(r"(\w+\s*\(\s*\w+\s*\)|\w+)\s*$", head)
-            name = re.sub(r"\s+", "", m.group(1)) if m else "?"
-            start = line_of(m.start(1) if m else k)
-            d, j = 0, i
-            while j < len(s):
-                d += {"{": 1, "}": -1}.get(s[j], 0)
-                if d == 0:
-                    break
-                j += 1
-            found.append((name, start, line_of(j)))
-            i = j + 1
-            continue
-        depth += {"{": 1, "}": -1}.get(c, 0)
+        if s[i] == "{" and depth == 0:
+            head = s[:i].rstrip()
+            if head.endswith(")") and not STRUCT.search(head):
+                k = match(head, len(head) - 1, -1)  # the '(' that opens the parameter list
+                m = NAME.search(head[:k])
+                j = match(s, i, 1)
+                found.append((re.sub(r"\s+", "", m.group(1)) if m else "?",
+                              line_of(m.start(1) if m else k), line_of(j)))
+                i = j + 1
+                continue
+        depth += DEPTH.get(s[i], 0)
         i += 1
     return found
 
@@ -107,7 +111,8 @@ def self_test():
     got = functions(text)
     if got != want:
         sys.exit(f"shape: self-test: found {got}, want {want}")
-    print(f"shape: self-test: {len(want)} functions found as written (one of 83 lines)")
+    longest = want[0][2] - want[0][1] + 1
+    print(f"shape: self-test: {len(want)} functions found as written (one of {longest} lines)")
 
 
 def main():
