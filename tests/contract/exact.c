@@ -265,6 +265,44 @@ static void test_extreme_o_minus_c_overflows(void)
     CHECK(hs[0].t_err >= 0 && hs[0].t_err < hs[0].t, "t_err finite and useful");
 }
 
+/* The 5-12-13 scene seen from an origin X away, X so large that t's ulp exceeds the cylinder: entry and
+ * exit (exact t = X - 5 and X + 5) round to the same t, and the point o + t·d lies on neither wall. The
+ * normal is still each crossing's, from the ray's line and r, not from that rounded point; part, flags
+ * and v are exact and t_err holds the exact t. X = 2^8/eps on the hot path of every configuration's
+ * default, and 2^36 (float) or 2^240 (double), which the double API answers on its exact path. */
+static void test_far_origin_normal_is_the_crossings(void)
+{
+#ifdef T_DOUBLE
+    const int far_exp = 240;
+#else
+    const int far_exp = 36;
+#endif
+    const T xs[2] = {L(256) / T_EPS, T_LDEXP(L(1), far_exp)};
+    const Cyl cyl = mk_cyl(0, 0, 0, 0, 0, 1, 13, 2);
+    Hit hs[2];
+    char m[160];
+    int i, k;
+    for (i = 0; i < 2; i++)
+        for (k = 0; k < 2; k++) {
+            const Ray ray = mk_ray(-xs[i], 12, L(0.5), 1, 0, 0);
+            const long double X = (long double)xs[i], out = k ? 1.0L : -1.0L; /* the exit's outward x */
+            snprintf(m, sizeof m, "origin %.6Lg away, %s normals", X, k ? "outward" : "facing");
+            sentinel(hs, 2);
+            EQ_INT(2, CYL(intersect_all)(&ray, &cyl, k ? CYL_OUTWARD : 0u, hs), m);
+            EQ_INT(CYL_SIDE, hs[0].part, m), EQ_INT(0, hs[0].flags, m);
+            EQ_INT(CYL_SIDE, hs[1].part, m), EQ_INT(CYL_F_INSIDE, hs[1].flags, m);
+            EXACT(0.5, hs[0].v, m), EXACT(0.5, hs[1].v, m);
+            CHECK(fabsl((long double)hs[0].t - (X - 5)) <= (long double)hs[0].t_err, m);
+            CHECK(fabsl((long double)hs[1].t - (X + 5)) <= (long double)hs[1].t_err, m);
+#if CYL_VERSION_MAJOR >= 2 /* v1's normal is the rounded point's */
+            VEC_NEAR(hs[0].n, -5.0L / 13, 12.0L / 13, 0, TOL_NORMAL, m);
+            VEC_NEAR(hs[1].n, out * 5 / 13, out * 12 / 13, 0, TOL_NORMAL, m);
+#else
+            (void)out;
+#endif
+        }
+}
+
 #if CYL_VERSION_MAJOR >= 2
 /* A ray along the axis of a capped cylinder of finite height h leaves through the high cap at
    h/2 (here |d| = |a|, so t = h/(2|a|)), with t_err holding, whatever the range of h|a|/2. */
@@ -456,6 +494,7 @@ static void run_exact(void)
     RUN_TEST(test_origin_inside);
     RUN_TEST(test_infinite_height);
     RUN_TEST(test_extreme_o_minus_c_overflows);
+    RUN_TEST(test_far_origin_normal_is_the_crossings);
     RUN_TEST(test_extreme_half_height_times_axis_overflows);
     RUN_TEST(test_extreme_height_beyond_radius_range);
     RUN_TEST(test_extreme_thin_cylinder);
