@@ -268,8 +268,8 @@ static void test_extreme_o_minus_c_overflows(void)
 /* The 5-12-13 scene seen from an origin X away, X so large that t's ulp exceeds the cylinder: entry and
  * exit (exact t = X - 5 and X + 5) round to the same t, and the point o + t·d lies on neither wall. The
  * normal is still each crossing's, from the ray's line and r, not from that rounded point; part, flags
- * and v are exact and t_err holds the exact t. X = 2^8/eps on the hot path of every configuration's
- * default, and 2^36 (float) or 2^240 (double), which the double API answers on its exact path. */
+ * and v are exact and t_err holds the exact t. X = 2^8/eps, and 2^36 (float) or 2^240 (double: past
+ * the hot path's range, the exact path answers). */
 static void test_far_origin_normal_is_the_crossings(void)
 {
 #ifdef T_DOUBLE
