@@ -94,6 +94,9 @@ MUTANTS_V2 = [
   "if (CYL__WIDE) CYL__P(mul3)(1, f->a, a);"),
  ("normal: a's components mixed", "a[0] = (CYL__L)cyl->a[0], a[1] = (CYL__L)cyl->a[1]", "a[0] = (CYL__L)cyl->a[1], a[1] = (CYL__L)cyl->a[0]"),
  ("wall normal h sign", "CYL__P(lin)(P * q, f->s, -h / f->aa * q, as, n);", "CYL__P(lin)(P * q, f->s, h / f->aa * q, as, n);"),
+ ("wall normal from the rounded point (y = m + t·s)", "CYL__P(lin)(P * q, f->s, -h / f->aa * q, as, n);",
+  "{ CYL__L y[3]; (void)as; CYL__P(lin)(1, f->m, x->t, f->s, y); CYL__P(cross3)(y, a, n);"
+  " CYL__P(mul3)(1 / (CYL__LSQRT(CYL__P(dot)(y, y)) * f->sqaa), n, n); }"),
  ("wall v unclamped +2 ulps", "return CYL__P(max)(-f->H, CYL__P(min)(v, f->H)); }", "return v * (1 + 4 * CYL__LU); }"),
  ("cap v swapped", "(x->part == CYL_CAP_HIGH ? f->H : -f->H);", "(x->part == CYL_CAP_HIGH ? -f->H : f->H);"),
  ("wall t_err x4096", "return Fb / Gb * (1 + 48 * u);", "return Fb / Gb * 4096;"),
