@@ -882,6 +882,19 @@ static void test_double_precise_tangent_roots_out_of_order(void)
   replay_finding("double-v2-precise-tangent-roots-out-of-order", FIXED);
 }
 
+/* Finding 64 (v2; fixed by the commit that added it; v1 passes). `make check`'s fuzz-short on the
+ * swap-2.0 branch (v2's header as 2.0.0), fuzz_isect, within 35 s: double, from_segment,
+ * OUTWARD|NO_TANGENT, the harness's precise tier. Lengths near 2^889 with r = 1.8·2^560, 2^-328 of
+ * |o - c|: beyond the range even scaled, so the exact path answers raised (r 2^-299 of the scene,
+ * t_err = inf). The ray passes 2^274 radii from the axis (2^245 raised ones), below the
+ * resolution of the plain s and m: they came out exact negatives, P = 0, and the raised frame's
+ * plain D made two wall hits. The raised frame now takes the compensated D too (N8), a miss.
+ * The check is the harness's own (e from its long double geometry): no reference needed. */
+static void test_double_raised_radius_spurious_wall_hit(void)
+{
+  replay_finding("double-v2-raised-radius-spurious-wall-hit", FIXED);
+}
+
 int main(void)
 {
   UNITY_BEGIN();
@@ -934,5 +947,6 @@ int main(void)
   RUN_TEST(test_double_precise_flat_disk_rim_below_t_ulp);
   RUN_TEST(test_double_flat_disk_steep_ray_default_rim);
   RUN_TEST(test_double_precise_tangent_roots_out_of_order);
+  RUN_TEST(test_double_raised_radius_spurious_wall_hit);
   return UNITY_END();
 }

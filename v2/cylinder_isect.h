@@ -1029,7 +1029,7 @@ CYL__COLD int CYL__P(cold)(const CYL__N(ray) *ray, const CYL__N(cylinder) *cyl, 
         f->r = CYL__P(max)(f->r, CYL__LSQRT(CYL__COLD_LO) * 2), f->H = CYL__P(max)(f->H, CYL__COLD_LO * 2), f->exact = 0;
     }
     f->par = CYL__P(parallel)(f) <= 0;
-    if ((CYL__SUPPORTED & CYL_PRECISE) && f->exact) CYL__X(exact_frame)(f); /* N8 */
+    if (CYL__SUPPORTED & CYL_PRECISE) CYL__X(exact_frame)(f); /* N8 (a raised frame too: its D decides the wall) */
     return CYL__HANDBACK ? CYL__DOUBT : CYL__P(answer)(ray, cyl, f, opts, want, hits, 1);
 }
 
